@@ -1,0 +1,13 @@
+# How the project finds its external dependencies (all from Debian packages).
+# See third_party/README.md for packages, versions and licenses.
+find_library(GMP_LIBRARY NAMES gmp REQUIRED)
+find_library(GMPXX_LIBRARY NAMES gmpxx REQUIRED)
+find_path(GMP_INCLUDE_DIR NAMES gmpxx.h REQUIRED)
+find_package(CGAL 5.5 REQUIRED)
+find_package(Threads REQUIRED)
+if(TRITRI_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(TRITRI_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()

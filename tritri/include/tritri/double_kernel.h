@@ -1,0 +1,33 @@
+// tritri/double_kernel.h
+//
+// DoubleKernel: points with double coordinates and the exact predicates of
+// double_predicates.h. Models tritri::OrderedKernel.
+//
+// Preconditions: finite coordinates. Exactness: every predicate exact for finite input.
+#pragma once
+
+#include <array>
+
+#include "tritri/double_predicates.h"
+#include "tritri/kernel_concept.h"
+
+namespace tritri {
+
+struct DoubleKernel {
+  using Point = std::array<double, 3>;
+
+  static Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
+    return tritri::orient3d(a, b, c, d);
+  }
+  static Sign orient2d(const Point& a, const Point& b, const Point& c, Plane plane) {
+    return tritri::orient2d(a, b, c, plane);
+  }
+  static bool equal(const Point& a, const Point& b) noexcept {
+    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+  }
+  static bool less(const Point& a, const Point& b) noexcept { return a < b; }
+};
+
+static_assert(OrderedKernel<DoubleKernel>);
+
+}  // namespace tritri

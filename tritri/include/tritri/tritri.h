@@ -1,0 +1,25 @@
+// tritri/tritri.h
+//
+// The whole public API of tritri: exact classification of the intersection of two
+// triangles, generic over the number representation.
+//
+//   #include <tritri/tritri.h>
+//   using P = tritri::DoubleKernel::Point;             // std::array<double, 3>
+//   tritri::Result r = tritri::classify<tritri::DoubleKernel>(a0, a1, a2, b0, b1, b2);
+//   for (const auto& p : r.points) { /* p.type, p.id0, p.id1 */ }
+//   for (const auto& s : r.segments) { /* r.points[s.p0], r.points[s.p1] */ }
+//
+// CgalKernel<CK> is included when CGAL's headers are available.
+#pragma once
+
+#include "tritri/sign.h"
+#include "tritri/kernel_concept.h"
+#include "tritri/result.h"
+#include "tritri/double_predicates.h"
+#include "tritri/double_kernel.h"
+#include "tritri/counting_kernel.h"
+#include "tritri/classify.h"
+
+#if __has_include(<CGAL/Kernel/global_functions.h>)
+#include "tritri/cgal_kernel.h"
+#endif
