@@ -10,13 +10,13 @@
 // Preconditions: both triangles non-degenerate (three distinct, non-collinear vertices).
 //   If one is degenerate and not strictly on one side of the other's plane, the result
 //   has degenerate == true and no points; a degenerate triangle strictly on one side of
-//   the other's plane gives an empty (correct) result without the flag.
+//   the other's plane may give an empty (correct) result without the flag.
 // Exactness: every decision is a kernel predicate (orient3d, orient2d); no constructions,
 //   no tolerances. The answer is exact whenever the kernel's predicates are, and
 //   identical for every exact kernel.
-// Complexity: O(1). Non-coplanar pairs: 3 to 6 orient3d to reject or detect coplanarity,
+// Complexity: O(1). 3 orient3d to reject or detect coplanarity, 6 for other pairs;
 //   at most 4 more in general position and at most 12 more (plus at most 12 orient2d)
-//   when vertices lie in the other triangle's plane. Coplanar pairs: at most 20 orient2d.
+//   when vertices lie in the other triangle's plane. Coplanar pairs: at most 22 orient2d.
 //   Nothing is evaluated that the signs already known rule out.
 //
 // Algorithm (DESIGN.md 3.4): the signs of B's vertices against A's plane and of A's
@@ -101,13 +101,18 @@ class Classifier {
   Result run() {
     for (int j = 0; j < 3; ++j) ob_[j] = to_int(k_.orient3d(*a_[0], *a_[1], *a_[2], *b_[j]));
     if (strictly_one_side(ob_)) return r_;
+    if (all_zero(ob_)) {
+      // B lies in plane(A), or A is degenerate. If both are proper triangles the planes
+      // coincide, so A's signs against plane(B) are all zero and need no evaluation;
+      // coplanar() checks both for degeneracy.
+      coplanar();
+      finish();
+      return r_;
+    }
     for (int i = 0; i < 3; ++i) oa_[i] = to_int(k_.orient3d(*b_[0], *b_[1], *b_[2], *a_[i]));
     if (strictly_one_side(oa_)) return r_;
-    const bool b_in_plane_a = all_zero(ob_), a_in_plane_b = all_zero(oa_);
-    if (b_in_plane_a && a_in_plane_b) {
-      coplanar();
-    } else if (b_in_plane_a || a_in_plane_b) {
-      r_.degenerate = true;  // a non-degenerate triangle cannot contain a proper one's plane alone
+    if (all_zero(oa_)) {
+      r_.degenerate = true;  // A spans a plane that B's vertices are not all in: B is degenerate
     } else if (oa_[0] * oa_[1] * oa_[2] != 0 && ob_[0] * ob_[1] * ob_[2] != 0) {
       crossing_general_position();
     } else {

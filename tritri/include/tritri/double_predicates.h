@@ -2,8 +2,9 @@
 //
 // Exact orient3d / orient2d on double coordinates, in three stages:
 //   1. a semi-static floating-point filter with a proven error bound (below);
-//   2. exact expansion arithmetic when the filter cannot decide and every coordinate is 0
-//      or has magnitude in [2^-280, 2^280];
+//   2. when the filter cannot decide and every coordinate is 0 or has magnitude in
+//      [2^-280, 2^280]: 128-bit integers if the differences are exact doubles within a
+//      narrow bit window (detail/integer_orient.h), exact expansion arithmetic otherwise;
 //   3. exact GMP integers otherwise (huge, tiny or subnormal coordinates).
 //
 // Preconditions: all coordinates finite (NaN / Inf give unspecified signs).
@@ -25,6 +26,7 @@
 
 #include "tritri/detail/expansion.h"
 #include "tritri/detail/gmp_orient.h"
+#include "tritri/detail/integer_orient.h"
 #include "tritri/sign.h"
 
 namespace tritri {
@@ -39,6 +41,14 @@ inline constexpr double kOrient3dBound = 5.4e-15;
 inline constexpr double kOrient2dBound = 8.9e-16;
 
 inline Sign to_sign(int s) noexcept { return s > 0 ? Sign::Positive : (s < 0 ? Sign::Negative : Sign::Zero); }
+
+// std::fmax handles NaN and often compiles to a library call; inputs here are finite.
+inline double max_abs(double a, double b) noexcept {
+  a = a < 0 ? -a : a;
+  b = b < 0 ? -b : b;
+  return a > b ? a : b;
+}
+inline double max_abs(double a, double b, double c) noexcept { return max_abs(max_abs(a, b), c); }
 
 inline bool in_filter_range(double m) noexcept { return m >= kFilterMin && m <= kFilterMax; }
 
@@ -55,25 +65,45 @@ bool all_expansion_safe(const double (&p)[N]) noexcept {
   return ok;
 }
 
-// Exact stages of orient3d (the filter failed or was out of range).
-inline Sign orient3d_exact(const double (&p)[12]) {
-  if (all_expansion_safe<12>(p)) {
-    Expansion<2> u[3], v[3], w[3];
+// Exact stages of orient3d (the filter failed or was out of range). Kept out of line so
+// that the filter stays small enough to inline.
+[[gnu::noinline]] inline Sign orient3d_exact(const double (&p)[12]) {
+  if (!all_expansion_safe<12>(p)) return to_sign(orient3d_gmp(p));
+  // The differences b-a, c-a, d-a, each split exactly into a rounded part and a tail.
+  double hi[9], lo[9];
+  bool tails = false;
+  for (int r = 0; r < 3; ++r)
     for (int k = 0; k < 3; ++k) {
-      u[k] = diff(p[3 + k], p[k]);
-      v[k] = diff(p[6 + k], p[k]);
-      w[k] = diff(p[9 + k], p[k]);
+      two_diff(p[3 * (r + 1) + k], p[k], hi[3 * r + k], lo[3 * r + k]);
+      tails |= lo[3 * r + k] != 0;
     }
-    return to_sign(det3_sign(u, v, w));
+  // Usually the differences are exact doubles within a narrow bit window (grids, float
+  // meshes): 128-bit integers decide in a few dozen instructions.
+  if (!tails) {
+    const int s = det3_sign_integer(hi);
+    if (s != 2) return to_sign(s);
   }
-  return to_sign(orient3d_gmp(p));
+  Expansion<2> u[3], v[3], w[3];
+  for (int k = 0; k < 3; ++k) {
+    u[k] = diff(p[3 + k], p[k]);
+    v[k] = diff(p[6 + k], p[k]);
+    w[k] = diff(p[9 + k], p[k]);
+  }
+  return to_sign(det3_sign<2>(u, v, w));
 }
 
-inline Sign orient2d_exact(const double (&p)[6]) {
-  if (all_expansion_safe<6>(p)) {
-    return to_sign(det2_sign(diff(p[2], p[0]), diff(p[3], p[1]), diff(p[4], p[0]), diff(p[5], p[1])));
+[[gnu::noinline]] inline Sign orient2d_exact(const double (&p)[6]) {
+  if (!all_expansion_safe<6>(p)) return to_sign(orient2d_gmp(p));
+  double hi[4], lo[4];
+  two_diff(p[2], p[0], hi[0], lo[0]);
+  two_diff(p[3], p[1], hi[1], lo[1]);
+  two_diff(p[4], p[0], hi[2], lo[2]);
+  two_diff(p[5], p[1], hi[3], lo[3]);
+  if (lo[0] == 0 && lo[1] == 0 && lo[2] == 0 && lo[3] == 0) {
+    const int s = det2_sign_integer(hi);
+    if (s != 2) return to_sign(s);
   }
-  return to_sign(orient2d_gmp(p));
+  return to_sign(det2_sign<2>(diff(p[2], p[0]), diff(p[3], p[1]), diff(p[4], p[0]), diff(p[5], p[1])));
 }
 
 }  // namespace detail
@@ -84,9 +114,9 @@ inline Sign orient3d(const double* a, const double* b, const double* c, const do
   const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
   const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
   const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
-  const double mx = std::fmax(std::fabs(ux), std::fmax(std::fabs(vx), std::fabs(wx)));
-  const double my = std::fmax(std::fabs(uy), std::fmax(std::fabs(vy), std::fabs(wy)));
-  const double mz = std::fmax(std::fabs(uz), std::fmax(std::fabs(vz), std::fabs(wz)));
+  const double mx = detail::max_abs(ux, vx, wx);
+  const double my = detail::max_abs(uy, vy, wy);
+  const double mz = detail::max_abs(uz, vz, wz);
   // A coordinate whose differences are all exactly zero puts the four points in one plane
   // (fl(x - y) == 0 exactly when x == y).
   if (mx == 0 || my == 0 || mz == 0) return Sign::Zero;
@@ -109,8 +139,8 @@ inline Sign orient3d(const std::array<double, 3>& a, const std::array<double, 3>
 // Exact for all finite doubles.
 inline Sign orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
   const double ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
-  const double mx = std::fmax(std::fabs(ux), std::fabs(vx));
-  const double my = std::fmax(std::fabs(uy), std::fabs(vy));
+  const double mx = detail::max_abs(ux, vx);
+  const double my = detail::max_abs(uy, vy);
   if (mx == 0 || my == 0) return Sign::Zero;  // the three points are on one axis line
   if (detail::in_filter_range(mx) && detail::in_filter_range(my)) {
     const double det = ux * vy - uy * vx;

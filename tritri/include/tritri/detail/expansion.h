@@ -1,6 +1,7 @@
 // tritri/detail/expansion.h
 //
-// Exact floating-point expansion arithmetic (after Priest and Shewchuk): a real number is
+// Exact floating-point expansion arithmetic (after Priest and Shewchuk, "Adaptive
+// precision floating-point arithmetic and fast robust geometric predicates", 1997): a real number is
 // held as a sum of doubles of increasing magnitude that do not overlap. Used by the
 // double backend's exact stage.
 //
@@ -21,6 +22,7 @@ struct Expansion {
   double v[N];
   std::size_t n = 0;
   void push(double x) noexcept { v[n++] = x; }
+  static constexpr std::size_t capacity() noexcept { return N; }
   // The sign of an expansion is the sign of its largest component.
   int sign() const noexcept { return n == 0 ? 0 : (v[n - 1] > 0 ? 1 : (v[n - 1] < 0 ? -1 : 0)); }
 };
@@ -98,39 +100,56 @@ Expansion<2 * N> scale(const Expansion<N>& e, double b) noexcept {
   return h;
 }
 
-// out = h + b (Shewchuk's grow_expansion with zero elimination); returns out's length.
-// out may not alias h.
-inline std::size_t grow(const double* h, std::size_t hn, double b, double* out) noexcept {
-  std::size_t n = 0;
-  double q = b;
-  for (std::size_t i = 0; i < hn; ++i) {
-    double s, err;
-    two_sum(q, h[i], s, err);
-    if (err != 0) out[n++] = err;
-    q = s;
+// out = e + f by merging components in order of magnitude (Shewchuk's
+// fast_expansion_sum_zeroelim; exact for strongly nonoverlapping inputs under
+// round-to-nearest-even, which every routine here produces). Returns out's length.
+// out may not alias e or f.
+inline std::size_t merge_sum(const double* e, std::size_t en, const double* f, std::size_t fn,
+                             double* out) noexcept {
+  if (en == 0 || fn == 0) {
+    const double* src = en ? e : f;
+    const std::size_t n = en ? en : fn;
+    for (std::size_t i = 0; i < n; ++i) out[i] = src[i];
+    return n;
   }
-  if (q != 0) out[n++] = q;
+  std::size_t i = 0, j = 0, n = 0;
+  // Takes the next component of smaller magnitude.
+  auto take = [&]() noexcept {
+    if (j >= fn || (i < en && ((f[j] > e[i]) == (f[j] > -e[i])))) return e[i++];
+    return f[j++];
+  };
+  double q = take();
+  double qnew, hh;
+  if (i < en && j < fn) {
+    const double x = take();
+    fast_two_sum(x, q, qnew, hh);
+    q = qnew;
+    if (hh != 0) out[n++] = hh;
+  }
+  while (i < en || j < fn) {
+    two_sum(q, take(), qnew, hh);
+    q = qnew;
+    if (hh != 0) out[n++] = hh;
+  }
+  if (q != 0 || n == 0) out[n++] = q;
+  if (n == 1 && out[0] == 0) n = 0;
   return n;
 }
 
-// Adds f to the expansion acc in place (Shewchuk's expansion_sum: grow by each component
-// of f). acc's capacity C must hold the result.
+// Adds f to the expansion acc in place; acc's capacity C must hold the result.
 template <std::size_t C, std::size_t M>
 void add_to(Expansion<C>& acc, const Expansion<M>& f) noexcept {
   double tmp[C];
-  for (std::size_t j = 0; j < f.n; ++j) {
-    const std::size_t n = grow(acc.v, acc.n, f.v[j], tmp);
-    for (std::size_t i = 0; i < n; ++i) acc.v[i] = tmp[i];
-    acc.n = n;
-  }
+  const std::size_t n = merge_sum(acc.v, acc.n, f.v, f.n, tmp);
+  for (std::size_t i = 0; i < n; ++i) acc.v[i] = tmp[i];
+  acc.n = n;
 }
 
 // h = e + f.
 template <std::size_t N, std::size_t M>
 Expansion<N + M> sum(const Expansion<N>& e, const Expansion<M>& f) noexcept {
   Expansion<N + M> h;
-  for (std::size_t i = 0; i < e.n; ++i) h.push(e.v[i]);
-  add_to(h, f);
+  h.n = merge_sum(e.v, e.n, f.v, f.n, h.v);
   return h;
 }
 
@@ -144,24 +163,37 @@ Expansion<N> negate(Expansion<N> e) noexcept {
 template <std::size_t N, std::size_t M>
 Expansion<2 * N * M> product(const Expansion<N>& e, const Expansion<M>& f) noexcept {
   Expansion<2 * N * M> h;
+  if (f.n == 1) {
+    const Expansion<2 * N> s = scale(e, f.v[0]);
+    h.n = s.n;
+    for (std::size_t i = 0; i < s.n; ++i) h.v[i] = s.v[i];
+    return h;
+  }
   for (std::size_t j = 0; j < f.n; ++j) add_to(h, scale(e, f.v[j]));
   return h;
 }
 
-// The exact sign of det[u; v] for 2-vectors given as exact difference expansions.
-inline int det2_sign(const Expansion<2>& ux, const Expansion<2>& uy, const Expansion<2>& vx,
-                     const Expansion<2>& vy) noexcept {
+// The exact sign of det[u; v] for 2-vectors given as exact difference expansions of at
+// most N components each (N = 1 when the differences were exact in double).
+template <std::size_t N>
+int det2_sign(const Expansion<N>& ux, const Expansion<N>& uy, const Expansion<N>& vx,
+              const Expansion<N>& vy) noexcept {
   return sum(product(ux, vy), negate(product(uy, vx))).sign();
 }
 
-// The exact sign of det[u; v; w] for 3-vectors given as exact difference expansions.
-inline int det3_sign(const Expansion<2> u[3], const Expansion<2> v[3],
-                     const Expansion<2> w[3]) noexcept {
+// The exact sign of det[u; v; w] for 3-vectors given as exact difference expansions of at
+// most N components each.
+template <std::size_t N>
+int det3_sign(const Expansion<N> (&u)[3], const Expansion<N> (&v)[3], const Expansion<N> (&w)[3]) noexcept {
   const auto m0 = sum(product(v[1], w[2]), negate(product(v[2], w[1])));
   const auto m1 = sum(product(v[2], w[0]), negate(product(v[0], w[2])));
   const auto m2 = sum(product(v[0], w[1]), negate(product(v[1], w[0])));
-  const auto t = sum(sum(product(m0, u[0]), product(m1, u[1])), product(m2, u[2]));
-  return t.sign();
+  auto t = product(m0, u[0]);
+  Expansion<3 * decltype(t){}.capacity()> total;
+  add_to(total, t);
+  add_to(total, product(m1, u[1]));
+  add_to(total, product(m2, u[2]));
+  return total.sign();
 }
 
 }  // namespace tritri::detail
