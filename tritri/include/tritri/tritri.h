@@ -9,7 +9,8 @@
 //   for (const auto& p : r.points) { /* p.type, p.id0, p.id1 */ }
 //   for (const auto& s : r.segments) { /* r.points[s.p0], r.points[s.p1] */ }
 //
-// CgalKernel<CK> is included when CGAL's headers are available.
+// CgalKernel<CK> and ImplicitKernel (LPI / TPI points) are included when CGAL's headers
+// are available.
 #pragma once
 
 #include "tritri/sign.h"
@@ -22,4 +23,5 @@
 
 #if __has_include(<CGAL/Kernel/global_functions.h>)
 #include "tritri/cgal_kernel.h"
+#include "tritri/implicit_kernel.h"
 #endif

@@ -1,0 +1,49 @@
+// tritri/detail/filtered_value.h
+//
+// FilteredValue: a double evaluated together with a certified error bound, the filter
+// stage of the implicit-point predicates. Written once, the predicate polynomials are
+// instantiated with this type (fast, may be undecided) and with an exact type.
+//
+// Bound (classical forward error analysis of a +,-,* expression tree on exact leaves):
+// the computed value is sum_m m * prod(1 + delta) over the monomials m of the expanded
+// polynomial, with at most `depth` factors |delta| <= u = 2^-53 per monomial. So
+// |computed - exact| <= gamma_depth * sum_m |m|, and sum_m |m| is what `perm` tracks
+// (the same tree evaluated on absolute values with + for -). Each product adds 2^-1022
+// to perm so that gamma * perm also covers the absolute error (<= 2^-1075) of a product
+// that underflows, scaled by whatever multiplies it later. Overflow gives inf or NaN,
+// which never passes the test. `sign()` inflates gamma_depth by 2^-20 for the rounding
+// of perm itself, valid for depth < 2^20.
+#pragma once
+
+namespace tritri::detail {
+
+struct FilteredValue {
+  double v = 0;     // value computed in double
+  double perm = 0;  // bound on the sum of |monomials| (plus underflow floors)
+  int depth = 0;    // roundings per monomial
+
+  FilteredValue() = default;
+  FilteredValue(double x) : v(x), perm(x < 0 ? -x : x), depth(0) {}  // exact leaf
+  FilteredValue(double v_, double p_, int d_) : v(v_), perm(p_), depth(d_) {}
+
+  friend FilteredValue operator+(const FilteredValue& a, const FilteredValue& b) {
+    return {a.v + b.v, a.perm + b.perm, (a.depth > b.depth ? a.depth : b.depth) + 1};
+  }
+  friend FilteredValue operator-(const FilteredValue& a, const FilteredValue& b) {
+    return {a.v - b.v, a.perm + b.perm, (a.depth > b.depth ? a.depth : b.depth) + 1};
+  }
+  friend FilteredValue operator-(const FilteredValue& a) { return {-a.v, a.perm, a.depth}; }
+  friend FilteredValue operator*(const FilteredValue& a, const FilteredValue& b) {
+    return {a.v * b.v, a.perm * b.perm + 0x1p-1022, a.depth + b.depth + 1};
+  }
+
+  // +1 / -1 when the exact value's sign is certain, 0 when the filter cannot decide.
+  int certified_sign() const {
+    const double bound = perm * (depth * (0x1p-53 * (1.0 + 0x1p-20)));
+    if (v > bound) return 1;
+    if (v < -bound) return -1;
+    return 0;  // undecided (also for exact zeros, inf and NaN)
+  }
+};
+
+}  // namespace tritri::detail

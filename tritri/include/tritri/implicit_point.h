@@ -1,0 +1,182 @@
+// tritri/implicit_point.h
+//
+// ImplicitPoint: a point that is either explicit (three doubles) or implicit, defined
+// exactly by explicit input points and never rounded:
+//   LPI  the line through p, q meets the plane through r, s, t;
+//   TPI  the three planes through (a0,a1,a2), (b0,b1,b2), (c0,c1,c2) meet.
+// Predicates on any mix of them are in implicit_predicates.h; ImplicitKernel
+// (implicit_kernel.h) makes them a tritri kernel.
+//
+// Construction: explicit_point(x, y, z); lpi(p, q, r, s, t); tpi(a0, ..., c2), where each
+// argument is a std::array<double, 3> or an explicit ImplicitPoint. lpi / tpi check
+// exactly that the point is defined (the line is not parallel to the plane, the planes
+// are independent, every defining triple spans a plane) and throw std::domain_error
+// otherwise; try_lpi / try_tpi return std::nullopt instead. Non-finite coordinates throw
+// std::invalid_argument.
+//
+// Ownership and lifetime: a point owns copies of its defining coordinates; it does not
+// refer to the arguments it was built from. Implicit points share one immutable,
+// reference-counted representation between copies, so copying costs an atomic increment
+// (explicit points: three doubles) and copies may be used from several threads.
+//
+// Cost: construction evaluates the homogeneous coordinates once in filtered double
+// arithmetic (cached for the predicates' filter stage; about 50 flops for an LPI, 200
+// for a TPI) and decides the sign of W, exactly if the filter cannot.
+#pragma once
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/Mpzf.h>
+#include <mpfr.h>
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+
+#include "tritri/detail/filtered_value.h"
+#include "tritri/detail/homogeneous.h"
+
+namespace tritri {
+
+class ImplicitPoint {
+ public:
+  using Coords = std::array<double, 3>;
+  enum class Kind : unsigned char { Explicit, LPI, TPI };
+
+  ImplicitPoint() = default;  // the explicit origin
+
+  static ImplicitPoint explicit_point(double x, double y, double z) {
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+      throw std::invalid_argument("tritri::ImplicitPoint: non-finite coordinate");
+    ImplicitPoint p;
+    p.xyz_ = {x, y, z};
+    return p;
+  }
+  static ImplicitPoint explicit_point(const Coords& c) { return explicit_point(c[0], c[1], c[2]); }
+
+  template <class A>
+  static std::optional<ImplicitPoint> try_lpi(const A& p, const A& q, const A& r, const A& s, const A& t) {
+    return make({coords(p), coords(q), coords(r), coords(s), coords(t)}, Kind::LPI);
+  }
+  template <class A>
+  static ImplicitPoint lpi(const A& p, const A& q, const A& r, const A& s, const A& t) {
+    auto pt = try_lpi(p, q, r, s, t);
+    if (!pt)
+      throw std::domain_error(
+          "tritri::ImplicitPoint::lpi: undefined point (the line is parallel to the plane, "
+          "p == q, or r, s, t are collinear)");
+    return *pt;
+  }
+  template <class A>
+  static std::optional<ImplicitPoint> try_tpi(const A& a0, const A& a1, const A& a2, const A& b0, const A& b1,
+                                              const A& b2, const A& c0, const A& c1, const A& c2) {
+    return make({coords(a0), coords(a1), coords(a2), coords(b0), coords(b1), coords(b2), coords(c0),
+                 coords(c1), coords(c2)},
+                Kind::TPI);
+  }
+  template <class A>
+  static ImplicitPoint tpi(const A& a0, const A& a1, const A& a2, const A& b0, const A& b1, const A& b2,
+                           const A& c0, const A& c1, const A& c2) {
+    auto pt = try_tpi(a0, a1, a2, b0, b1, b2, c0, c1, c2);
+    if (!pt)
+      throw std::domain_error(
+          "tritri::ImplicitPoint::tpi: undefined point (the three planes are not independent, "
+          "or a defining triple is collinear)");
+    return *pt;
+  }
+
+  Kind kind() const noexcept { return rep_ ? rep_->kind : Kind::Explicit; }
+  bool is_explicit() const noexcept { return !rep_; }
+  // The coordinates of an explicit point; for an implicit point, an approximation from the
+  // filter stage (use to_double for the correctly rounded value).
+  const Coords& approx() const noexcept { return xyz_; }
+  // The defining explicit points: 5 for an LPI (p, q, r, s, t), 9 for a TPI; 0 if explicit.
+  int input_count() const noexcept { return rep_ ? (rep_->kind == Kind::LPI ? 5 : 9) : 0; }
+  const Coords& input(int i) const noexcept { return rep_->in[i]; }
+
+  // Sign of W (+1 / -1) for implicit points, +1 for explicit ones.
+  int w_sign() const noexcept { return rep_ ? rep_->w_sign : 1; }
+  // Cached filtered homogeneous coordinates (implicit points only).
+  const detail::Homogeneous<detail::FilteredValue>& filtered() const noexcept { return rep_->filtered; }
+
+  // Homogeneous coordinates evaluated with number type T (explicit: (x, y, z, 1)).
+  template <class T>
+  detail::Homogeneous<T> homogeneous() const {
+    if (!rep_) return {T(xyz_[0]), T(xyz_[1]), T(xyz_[2]), T(1.0)};
+    return evaluate<T>(rep_->kind, rep_->in);
+  }
+
+ private:
+  struct Rep {
+    Kind kind;
+    std::array<Coords, 9> in;
+    detail::Homogeneous<detail::FilteredValue> filtered;
+    int w_sign;
+  };
+
+  static const Coords& coords(const Coords& c) { return c; }
+  static const Coords& coords(const ImplicitPoint& p) {
+    if (!p.is_explicit())
+      throw std::invalid_argument("tritri::ImplicitPoint: lpi/tpi take explicit points as arguments");
+    return p.xyz_;
+  }
+
+  template <class T>
+  static detail::Homogeneous<T> evaluate(Kind kind, const std::array<Coords, 9>& in) {
+    if (kind == Kind::LPI) return detail::lpi_homogeneous<T>(in[0], in[1], in[2], in[3], in[4]);
+    return detail::tpi_homogeneous<T>(in);
+  }
+
+  static std::optional<ImplicitPoint> make(std::initializer_list<Coords> list, Kind kind) {
+    auto rep = std::make_shared<Rep>();
+    rep->kind = kind;
+    int i = 0;
+    for (const Coords& c : list) {
+      if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
+        throw std::invalid_argument("tritri::ImplicitPoint: non-finite coordinate");
+      rep->in[i++] = c;
+    }
+    rep->filtered = evaluate<detail::FilteredValue>(kind, rep->in);
+    // W = 0 exactly means the point is undefined: decide its sign exactly.
+    int s = rep->filtered.w.certified_sign();
+    if (s == 0) s = static_cast<int>(evaluate<CGAL::Mpzf>(kind, rep->in).w.sign());
+    if (s == 0) return std::nullopt;
+    rep->w_sign = s;
+    ImplicitPoint p;
+    const auto& f = rep->filtered;
+    p.xyz_ = {f.x.v / f.w.v, f.y.v / f.w.v, f.z.v / f.w.v};
+    p.rep_ = std::move(rep);
+    return p;
+  }
+
+  Coords xyz_{0, 0, 0};
+  std::shared_ptr<const Rep> rep_;
+};
+
+// The exact coordinates as rationals.
+inline std::array<CGAL::Gmpq, 3> to_exact(const ImplicitPoint& p) {
+  if (p.is_explicit()) return {CGAL::Gmpq(p.approx()[0]), CGAL::Gmpq(p.approx()[1]), CGAL::Gmpq(p.approx()[2])};
+  const auto h = p.homogeneous<CGAL::Mpzf>();
+  const CGAL::Gmpq w = CGAL::Gmpq(h.w);
+  return {CGAL::Gmpq(h.x) / w, CGAL::Gmpq(h.y) / w, CGAL::Gmpq(h.z) / w};
+}
+
+// The coordinates rounded to the nearest double (exact for explicit points; for implicit
+// points within half an ulp per coordinate, as MPFR rounds the exact rational; results in
+// the subnormal range may be off by one more rounding).
+inline std::array<double, 3> to_double(const ImplicitPoint& p) {
+  if (p.is_explicit()) return p.approx();
+  const auto q = to_exact(p);
+  std::array<double, 3> out;
+  mpfr_t r;
+  mpfr_init2(r, 53);
+  for (int k = 0; k < 3; ++k) {
+    mpfr_set_q(r, q[k].mpq(), MPFR_RNDN);
+    out[k] = mpfr_get_d(r, MPFR_RNDN);
+  }
+  mpfr_clear(r);
+  return out;
+}
+
+}  // namespace tritri

@@ -1,0 +1,226 @@
+// tritri/implicit_predicates.h
+//
+// Exact predicates on ImplicitPoints (any mix of explicit, LPI and TPI points):
+// orient3d, orient2d (XY, YZ, ZX), equal and less (lexicographic x, y, z).
+//
+// Each predicate is one polynomial in the points' homogeneous coordinates, written once
+// over a number type and evaluated in two stages: FilteredValue on the coordinates cached
+// in every implicit point (a certified error bound; decides almost always), then
+// CGAL::Mpzf (exact) only when the filter cannot decide. Predicates on explicit points
+// only use the double backend (double_predicates.h). Exact for every input.
+//
+// Conventions are those of the kernel concept: orient3d(a, b, c, d) is the sign of
+// det[b-a; c-a; d-a], orient2d the sign of det[b-a; c-a] in the projection.
+// Homogeneous form: with rows (X, Y, Z, W), det4 = W_a W_b W_c W_d * (-orient3d), so
+// orient3d = -sign(det4) * prod sign(W). When an operand e is explicit, subtracting its
+// row leaves a 3x3 determinant of rows W_i (p_i - p_e), which has lower degree.
+#pragma once
+
+#include <CGAL/Mpzf.h>
+
+#include <array>
+#include <cstdint>
+
+#include "tritri/detail/filtered_value.h"
+#include "tritri/detail/homogeneous.h"
+#include "tritri/double_predicates.h"
+#include "tritri/implicit_point.h"
+#include "tritri/sign.h"
+
+namespace tritri {
+
+// How often the filter decided, per thread (for benchmarks and reports).
+struct ImplicitPredicateStats {
+  std::uint64_t filtered = 0;  // decided by the floating-point filter
+  std::uint64_t exact = 0;     // needed the exact stage
+};
+inline ImplicitPredicateStats& implicit_predicate_stats() {
+  thread_local ImplicitPredicateStats stats;
+  return stats;
+}
+
+namespace detail {
+
+struct FilteredCoordinates {
+  const Homogeneous<FilteredValue>& operator()(const ImplicitPoint& p) const { return p.filtered(); }
+};
+struct ExactCoordinates {
+  Homogeneous<CGAL::Mpzf> operator()(const ImplicitPoint& p) const { return p.homogeneous<CGAL::Mpzf>(); }
+};
+
+// Evaluates poly(T-tag, coordinate getter) with the filter, then exactly if needed.
+template <class Poly>
+int staged_sign(const Poly& poly) {
+  const int s = poly(FilteredValue{}, FilteredCoordinates{}).certified_sign();
+  if (s != 0) {
+    ++implicit_predicate_stats().filtered;
+    return s;
+  }
+  ++implicit_predicate_stats().exact;
+  return static_cast<int>(poly(CGAL::Mpzf{}, ExactCoordinates{}).sign());
+}
+
+// Coordinates of point p relative to explicit point c, scaled by W_p: W_p (p - c),
+// restricted to the axes in `axes`.
+template <class T, class Get, std::size_t N>
+std::array<T, N> scaled_difference(const ImplicitPoint& p, const ImplicitPoint::Coords& c,
+                                   const std::array<int, N>& axes, const Get& get) {
+  std::array<T, N> out;
+  if (p.is_explicit()) {
+    for (std::size_t k = 0; k < N; ++k) out[k] = T(p.approx()[axes[k]]) - T(c[axes[k]]);
+  } else {
+    const auto& h = get(p);
+    const T* hc[3] = {&h.x, &h.y, &h.z};
+    for (std::size_t k = 0; k < N; ++k) out[k] = *hc[axes[k]] - T(c[axes[k]]) * h.w;
+  }
+  return out;
+}
+
+template <class T>
+std::array<T, 4> row4(const Homogeneous<T>& h) {
+  return {h.x, h.y, h.z, h.w};
+}
+
+// det of the 4x4 matrix with rows r0..r3, by Laplace expansion on complementary 2x2 minors.
+template <class T>
+T det4(const std::array<T, 4>& r0, const std::array<T, 4>& r1, const std::array<T, 4>& r2,
+       const std::array<T, 4>& r3) {
+  const T s0 = r0[0] * r1[1] - r1[0] * r0[1], s1 = r0[0] * r1[2] - r1[0] * r0[2];
+  const T s2 = r0[0] * r1[3] - r1[0] * r0[3], s3 = r0[1] * r1[2] - r1[1] * r0[2];
+  const T s4 = r0[1] * r1[3] - r1[1] * r0[3], s5 = r0[2] * r1[3] - r1[2] * r0[3];
+  const T c5 = r2[2] * r3[3] - r3[2] * r2[3], c4 = r2[1] * r3[3] - r3[1] * r2[3];
+  const T c3 = r2[1] * r3[2] - r3[1] * r2[2], c2 = r2[0] * r3[3] - r3[0] * r2[3];
+  const T c1 = r2[0] * r3[2] - r3[0] * r2[2], c0 = r2[0] * r3[1] - r3[0] * r2[1];
+  return s0 * c5 - s1 * c4 + s2 * c3 + s3 * c2 - s4 * c1 + s5 * c0;
+}
+
+template <class T>
+T det3(const std::array<T, 3>& r0, const std::array<T, 3>& r1, const std::array<T, 3>& r2) {
+  return r0[0] * (r1[1] * r2[2] - r1[2] * r2[1]) - r0[1] * (r1[0] * r2[2] - r1[2] * r2[0]) +
+         r0[2] * (r1[0] * r2[1] - r1[1] * r2[0]);
+}
+
+inline int first_explicit(std::initializer_list<const ImplicitPoint*> pts) {
+  int i = 0;
+  for (const ImplicitPoint* p : pts) {
+    if (p->is_explicit()) return i;
+    ++i;
+  }
+  return -1;
+}
+
+inline std::array<int, 2> plane_axes(Plane plane) {
+  const int i = plane == Plane::XY ? 0 : (plane == Plane::YZ ? 1 : 2);
+  return {i, (i + 1) % 3};
+}
+
+// sign(X_p W_q - X_q W_p) along axis k, times sign(W_p W_q): the sign of p_k - q_k.
+inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, int k) {
+  if (p.is_explicit() && q.is_explicit()) {
+    const double a = p.approx()[k], b = q.approx()[k];
+    return a < b ? -1 : (a > b ? 1 : 0);
+  }
+  const int s = staged_sign([&](auto tag, const auto& get) {
+    using T = decltype(tag);
+    if (q.is_explicit()) {
+      const auto& h = get(p);
+      const T* hc[3] = {&h.x, &h.y, &h.z};
+      return *hc[k] - T(q.approx()[k]) * h.w;
+    }
+    if (p.is_explicit()) {
+      const auto& h = get(q);
+      const T* hc[3] = {&h.x, &h.y, &h.z};
+      return T(p.approx()[k]) * h.w - *hc[k];
+    }
+    const auto& hp = get(p);
+    const auto& hq = get(q);
+    const T* pc[3] = {&hp.x, &hp.y, &hp.z};
+    const T* qc[3] = {&hq.x, &hq.y, &hq.z};
+    return *pc[k] * hq.w - *qc[k] * hp.w;
+  });
+  return s * p.w_sign() * q.w_sign();
+}
+
+}  // namespace detail
+
+// Sign of det[b-a; c-a; d-a] (Positive: d on the side of plane abc that (b-a) x (c-a)
+// points to). Exact.
+inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c,
+                     const ImplicitPoint& d) {
+  if (a.is_explicit() && b.is_explicit() && c.is_explicit() && d.is_explicit())
+    return orient3d(a.approx(), b.approx(), c.approx(), d.approx());
+  const ImplicitPoint* pts[4] = {&a, &b, &c, &d};
+  const int e = detail::first_explicit({&a, &b, &c, &d});
+  const int w = a.w_sign() * b.w_sign() * c.w_sign() * d.w_sign();
+  if (e >= 0) {
+    // orient3d = (-1)^e det3(rows W_i (p_i - p_e), i != e, in order) * prod sign(W_i).
+    const auto& ref = pts[e]->approx();
+    const int s = detail::staged_sign([&](auto tag, const auto& get) {
+      using T = decltype(tag);
+      std::array<T, 3> rows[3];
+      int n = 0;
+      for (int i = 0; i < 4; ++i)
+        if (i != e) rows[n++] = detail::scaled_difference<T>(*pts[i], ref, std::array<int, 3>{0, 1, 2}, get);
+      return detail::det3(rows[0], rows[1], rows[2]);
+    });
+    return detail::to_sign((e % 2 ? -s : s) * w);
+  }
+  const int s = detail::staged_sign([&](auto tag, const auto& get) {
+    using T = decltype(tag);
+    (void)tag;
+    return detail::det4<T>(detail::row4<T>(get(a)), detail::row4<T>(get(b)), detail::row4<T>(get(c)),
+                           detail::row4<T>(get(d)));
+  });
+  return detail::to_sign(-s * w);
+}
+
+// Sign of det[b-a; c-a] in the projection onto `plane`. Exact.
+inline Sign orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c, Plane plane) {
+  if (a.is_explicit() && b.is_explicit() && c.is_explicit())
+    return orient2d(a.approx(), b.approx(), c.approx(), plane);
+  const auto axes = detail::plane_axes(plane);
+  const ImplicitPoint* pts[3] = {&a, &b, &c};
+  const int e = detail::first_explicit({&a, &b, &c});
+  const int w = a.w_sign() * b.w_sign() * c.w_sign();
+  if (e >= 0) {
+    const auto& ref = pts[e]->approx();
+    const int s = detail::staged_sign([&](auto tag, const auto& get) {
+      using T = decltype(tag);
+      std::array<T, 2> rows[2];
+      int n = 0;
+      for (int i = 0; i < 3; ++i)
+        if (i != e) rows[n++] = detail::scaled_difference<T>(*pts[i], ref, axes, get);
+      return rows[0][0] * rows[1][1] - rows[0][1] * rows[1][0];
+    });
+    return detail::to_sign((e % 2 ? -s : s) * w);
+  }
+  const int s = detail::staged_sign([&](auto tag, const auto& get) {
+    using T = decltype(tag);
+    std::array<T, 3> rows[3];
+    for (int i = 0; i < 3; ++i) {
+      const auto& h = get(*pts[i]);
+      const T* hc[3] = {&h.x, &h.y, &h.z};
+      rows[i] = {*hc[axes[0]], *hc[axes[1]], h.w};
+    }
+    return detail::det3(rows[0], rows[1], rows[2]);
+  });
+  return detail::to_sign(s * w);
+}
+
+// Exact coincidence.
+inline bool equal(const ImplicitPoint& p, const ImplicitPoint& q) {
+  for (int k = 0; k < 3; ++k)
+    if (detail::compare_coordinate(p, q, k) != 0) return false;
+  return true;
+}
+
+// Exact lexicographic (x, y, z) order.
+inline bool less(const ImplicitPoint& p, const ImplicitPoint& q) {
+  for (int k = 0; k < 3; ++k) {
+    const int c = detail::compare_coordinate(p, q, k);
+    if (c != 0) return c < 0;
+  }
+  return false;
+}
+
+}  // namespace tritri
