@@ -2,6 +2,7 @@
 # See third_party/README.md for packages, versions and licenses.
 find_library(GMP_LIBRARY NAMES gmp REQUIRED)
 find_library(GMPXX_LIBRARY NAMES gmpxx REQUIRED)
+find_library(MPFR_LIBRARY NAMES mpfr REQUIRED)
 find_path(GMP_INCLUDE_DIR NAMES gmpxx.h REQUIRED)
 find_package(CGAL 5.5 REQUIRED)
 find_package(Threads REQUIRED)
