@@ -7,7 +7,8 @@
 //      narrow bit window (detail/integer_orient.h), exact expansion arithmetic otherwise;
 //   3. exact GMP integers otherwise (huge, tiny or subnormal coordinates).
 //
-// Preconditions: all coordinates finite (NaN / Inf give unspecified signs).
+// Preconditions: all coordinates finite (NaN / Inf give unspecified signs); IEEE binary64
+// with gradual underflow (no flush-to-zero, as -ffast-math would set).
 // Exactness: the returned sign is the sign of the exact determinant, for every finite
 // input. Cost: a few nanoseconds on the filter path; ~100 ns to a few us otherwise.
 //
@@ -67,7 +68,20 @@ bool all_expansion_safe(const double (&p)[N]) noexcept {
 
 // Exact stages of orient3d (the filter failed or was out of range). Kept out of line so
 // that the filter stays small enough to inline.
+template <int N>
+bool any_two_points_equal(const double (&p)[N], int dim) noexcept {
+  for (int i = 0; i < N; i += dim)
+    for (int j = i + dim; j < N; j += dim) {
+      bool same = true;
+      for (int k = 0; k < dim; ++k) same &= p[i + k] == p[j + k];
+      if (same) return true;
+    }
+  return false;
+}
+
 [[gnu::noinline]] inline Sign orient3d_exact(const double (&p)[12]) {
+  // Repeated points (shared mesh vertices) make the determinant zero: skip the exact work.
+  if (any_two_points_equal<12>(p, 3)) return Sign::Zero;
   if (!all_expansion_safe<12>(p)) return to_sign(orient3d_gmp(p));
   // The differences b-a, c-a, d-a, each split exactly into a rounded part and a tail.
   double hi[9], lo[9];
@@ -93,6 +107,7 @@ bool all_expansion_safe(const double (&p)[N]) noexcept {
 }
 
 [[gnu::noinline]] inline Sign orient2d_exact(const double (&p)[6]) {
+  if (any_two_points_equal<6>(p, 2)) return Sign::Zero;
   if (!all_expansion_safe<6>(p)) return to_sign(orient2d_gmp(p));
   double hi[4], lo[4];
   two_diff(p[2], p[0], hi[0], lo[0]);
