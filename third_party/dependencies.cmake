@@ -6,6 +6,10 @@ find_library(MPFR_LIBRARY NAMES mpfr REQUIRED)
 find_path(GMP_INCLUDE_DIR NAMES gmpxx.h REQUIRED)
 find_package(CGAL 5.5 REQUIRED)
 find_package(Threads REQUIRED)
+# oneTBB for the arrangement pipeline's parallel stages; CGAL's module defines
+# CGAL::TBB_support (CGAL_LINKED_WITH_TBB, needed by CGAL's Parallel_tag algorithms).
+find_package(TBB CONFIG REQUIRED)
+include(CGAL_TBB_support)
 if(TRITRI_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

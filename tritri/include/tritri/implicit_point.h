@@ -21,7 +21,8 @@
 //
 // Cost: construction evaluates the homogeneous coordinates once in filtered double
 // arithmetic (cached for the predicates' filter stage; about 50 flops for an LPI, 200
-// for a TPI) and decides the sign of W, exactly if the filter cannot.
+// for a TPI) and decides the sign of W, exactly if the filter cannot. The exact
+// coordinates are computed only if a predicate's filter fails, then cached.
 #pragma once
 
 #include <CGAL/Gmpq.h>
@@ -31,6 +32,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 
@@ -100,6 +102,15 @@ class ImplicitPoint {
   // Cached filtered homogeneous coordinates (implicit points only).
   const detail::Homogeneous<detail::FilteredValue>& filtered() const noexcept { return rep_->filtered; }
 
+  // Exact homogeneous coordinates of an implicit point, computed once and cached (thread
+  // safe). Precondition: !is_explicit().
+  const detail::Homogeneous<CGAL::Mpzf>& exact_homogeneous() const {
+    std::call_once(rep_->exact_once, [this] {
+      rep_->exact = std::make_unique<const detail::Homogeneous<CGAL::Mpzf>>(homogeneous<CGAL::Mpzf>());
+    });
+    return *rep_->exact;
+  }
+
   // Homogeneous coordinates evaluated with number type T (explicit: (x, y, z, 1)).
   template <class T>
   detail::Homogeneous<T> homogeneous() const {
@@ -113,6 +124,9 @@ class ImplicitPoint {
     std::array<Coords, 9> in;
     detail::Homogeneous<detail::FilteredValue> filtered;
     int w_sign;
+    // Exact homogeneous coordinates, computed on first use by the exact stage only.
+    mutable std::once_flag exact_once;
+    mutable std::unique_ptr<const detail::Homogeneous<CGAL::Mpzf>> exact;
   };
 
   static const Coords& coords(const Coords& c) { return c; }
@@ -157,25 +171,34 @@ class ImplicitPoint {
 // The exact coordinates as rationals.
 inline std::array<CGAL::Gmpq, 3> to_exact(const ImplicitPoint& p) {
   if (p.is_explicit()) return {CGAL::Gmpq(p.approx()[0]), CGAL::Gmpq(p.approx()[1]), CGAL::Gmpq(p.approx()[2])};
-  const auto h = p.homogeneous<CGAL::Mpzf>();
+  const auto& h = p.exact_homogeneous();
   const CGAL::Gmpq w = CGAL::Gmpq(h.w);
   return {CGAL::Gmpq(h.x) / w, CGAL::Gmpq(h.y) / w, CGAL::Gmpq(h.z) / w};
 }
 
-// The coordinates rounded to the nearest double (exact for explicit points; for implicit
-// points within half an ulp per coordinate, as MPFR rounds the exact rational; results in
-// the subnormal range may be off by one more rounding).
+// The coordinates rounded to the nearest double (ties to even), subnormals included:
+// exact for explicit points, correctly rounded from the exact rational for implicit ones
+// (MPFR's exponent range is per thread, so this is thread-safe). Overflow gives +-inf.
 inline std::array<double, 3> to_double(const ImplicitPoint& p) {
   if (p.is_explicit()) return p.approx();
   const auto q = to_exact(p);
   std::array<double, 3> out;
+  // Round once, to the double format including its subnormal range: MPFR's exponent range
+  // set to double's and mpfr_subnormalize (rounding to 53 bits first and then to a
+  // subnormal would round twice).
+  const mpfr_exp_t old_emin = mpfr_get_emin(), old_emax = mpfr_get_emax();
+  mpfr_set_emin(-1073);
+  mpfr_set_emax(1024);
   mpfr_t r;
   mpfr_init2(r, 53);
   for (int k = 0; k < 3; ++k) {
-    mpfr_set_q(r, q[k].mpq(), MPFR_RNDN);
+    const int inexact = mpfr_set_q(r, q[k].mpq(), MPFR_RNDN);
+    mpfr_subnormalize(r, inexact, MPFR_RNDN);
     out[k] = mpfr_get_d(r, MPFR_RNDN);
   }
   mpfr_clear(r);
+  mpfr_set_emin(old_emin);
+  mpfr_set_emax(old_emax);
   return out;
 }
 

@@ -44,8 +44,8 @@ namespace detail {
 struct FilteredCoordinates {
   const Homogeneous<FilteredValue>& operator()(const ImplicitPoint& p) const { return p.filtered(); }
 };
-struct ExactCoordinates {
-  Homogeneous<CGAL::Mpzf> operator()(const ImplicitPoint& p) const { return p.homogeneous<CGAL::Mpzf>(); }
+struct ExactCoordinates {  // only called on implicit points
+  const Homogeneous<CGAL::Mpzf>& operator()(const ImplicitPoint& p) const { return p.exact_homogeneous(); }
 };
 
 // Evaluates poly(T-tag, coordinate getter) with the filter, then exactly if needed.

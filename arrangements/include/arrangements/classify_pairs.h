@@ -1,0 +1,28 @@
+// arrangements/classify_pairs.h
+//
+// classify_pairs: runs a pair classifier over all candidate pairs, in parallel (TBB), and
+// keeps the pairs that intersect beyond what they share in the mesh.
+//
+// Inputs:  V, F the preprocessed soup; pairs candidate pairs (i < j); classifier which
+//          classifier; threads (<= 0: all cores).
+// Output:  one PairIntersection per intersecting pair, in the order of `pairs`
+//          (deterministic for any number of threads).
+// Cost: O(#pairs) classifications, parallel.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "arrangements/pair_intersection.h"
+#include "arrangements/triangle_soup.h"
+
+namespace arrangements {
+
+enum class Classifier { Native };
+
+std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
+                                             const std::vector<std::pair<int, int>>& pairs,
+                                             Classifier classifier);
+
+}  // namespace arrangements

@@ -1,0 +1,52 @@
+// arrangements/intersection_graph.h
+//
+// IntersectionGraph: the classified intersections of a triangle soup, ready for
+// triangulation. build_intersection_graph merges the per-pair records of any classifier.
+//
+// Points: ids [0, num_input_vertices) are the input vertices (explicit); the others are
+// new implicit points (LPIs), each geometrically distinct from every other point and
+// from every input vertex (deduplicated exactly: first by definition, then by exact
+// coordinate comparison).
+// Per triangle t: triangle_points[t] the points strictly inside it; edge_points[e] for
+// each of its edges e = triangle_edges[t][k] the points strictly inside that edge (edges
+// are shared between triangles); triangle_segments[t] the constraint segments (point id
+// pairs, smaller id first) that lie in it; coplanar_partners[t] the triangles that overlap
+// it in a common plane. Coplanar partners also receive each other's points and segments
+// (inside the partner's closed triangle), so that both are split alike.
+// All lists are sorted and unique: the graph does not depend on thread count.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <tritri/implicit_point.h>
+
+#include "arrangements/pair_intersection.h"
+#include "arrangements/triangle_soup.h"
+
+namespace arrangements {
+
+struct IntersectionGraph {
+  int num_input_vertices = 0;
+  std::vector<tritri::ImplicitPoint> points;
+  std::vector<std::array<int, 2>> edges;          // unique undirected edges, smaller id first
+  std::vector<std::array<int, 3>> triangle_edges;  // edge id of each triangle's edge k
+  std::vector<std::vector<int>> edge_points;
+  std::vector<std::vector<int>> triangle_points;
+  std::vector<std::vector<std::array<int, 2>>> triangle_segments;
+  std::vector<std::vector<int>> coplanar_partners;
+
+  // Statistics.
+  std::size_t intersecting_pairs = 0;
+  std::size_t coplanar_pairs = 0;
+  std::size_t new_points = 0;       // distinct new points (LPIs)
+  std::size_t segments = 0;         // distinct constraint segments over all triangles
+};
+
+// Inputs:  V, F the preprocessed soup (merged vertices, no degenerate triangles);
+//          pairs the records of intersecting pairs (classify_pairs).
+// Output:  the graph. Exact. Cost: O(P log P) for P new points plus the records.
+IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std::vector<Tri>& F,
+                                           const std::vector<PairIntersection>& pairs);
+
+}  // namespace arrangements

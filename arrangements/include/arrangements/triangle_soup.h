@@ -1,0 +1,31 @@
+// arrangements/triangle_soup.h
+//
+// TriangleSoup: the pipeline's plain input and intermediate data.
+//   vertices   #V list of exact double coordinates
+//   triangles  #F list of vertex indices into `vertices`
+//   labels     #F label-set index per triangle, into `label_sets`
+//   label_sets distinct sorted label sets (any number of labels per triangle: no cap)
+//   source     #F index of each triangle in the concatenated input files' triangle lists
+//              (after fan triangulation of polygons, in file order), so that output
+//              provenance maps back to the input.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace arrangements {
+
+using Vec3 = std::array<double, 3>;
+using Tri = std::array<int, 3>;
+using LabelSet = std::vector<std::uint32_t>;  // sorted, unique
+
+struct TriangleSoup {
+  std::vector<Vec3> vertices;
+  std::vector<Tri> triangles;
+  std::vector<int> labels;
+  std::vector<LabelSet> label_sets;
+  std::vector<std::int64_t> source;
+};
+
+}  // namespace arrangements

@@ -1,0 +1,34 @@
+#include "arrangements/classify_pairs.h"
+
+#include <tbb/parallel_for.h>
+
+#include "arrangements/classify_native.h"
+
+namespace arrangements {
+
+std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
+                                             const std::vector<std::pair<int, int>>& pairs,
+                                             Classifier classifier) {
+  // Fixed chunks, concatenated in order: the output does not depend on scheduling.
+  constexpr std::size_t chunk = 2048;
+  const std::size_t chunks = (pairs.size() + chunk - 1) / chunk;
+  std::vector<std::vector<PairIntersection>> found(chunks);
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+    PairIntersection record;
+    const std::size_t end = std::min(pairs.size(), (c + 1) * chunk);
+    for (std::size_t i = c * chunk; i < end; ++i) {
+      bool hit = false;
+      switch (classifier) {
+        case Classifier::Native:
+          hit = classify_pair_native(V, F, pairs[i].first, pairs[i].second, record);
+          break;
+      }
+      if (hit) found[c].push_back(record);
+    }
+  });
+  std::vector<PairIntersection> all;
+  for (auto& f : found) all.insert(all.end(), f.begin(), f.end());
+  return all;
+}
+
+}  // namespace arrangements

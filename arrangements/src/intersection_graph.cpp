@@ -1,0 +1,151 @@
+#include "arrangements/intersection_graph.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include <algorithm>
+#include <numeric>
+
+#include <tritri/implicit_predicates.h>
+
+#include "arrangements/auxiliary_point.h"
+
+namespace arrangements {
+namespace {
+
+template <class T>
+void sort_unique(std::vector<T>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+void build_edges(const std::vector<Tri>& F, IntersectionGraph& g) {
+  std::vector<std::array<int, 3>> half;  // (v0, v1, triangle * 3 + k) with v0 < v1
+  half.reserve(F.size() * 3);
+  for (std::size_t t = 0; t < F.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      int a = F[t][k], b = F[t][(k + 1) % 3];
+      if (a > b) std::swap(a, b);
+      half.push_back({a, b, static_cast<int>(t * 3 + k)});
+    }
+  std::sort(half.begin(), half.end());
+  g.triangle_edges.assign(F.size(), {-1, -1, -1});
+  for (std::size_t i = 0; i < half.size(); ++i) {
+    if (i == 0 || half[i][0] != half[i - 1][0] || half[i][1] != half[i - 1][1])
+      g.edges.push_back({half[i][0], half[i][1]});
+    g.triangle_edges[half[i][2] / 3][half[i][2] % 3] = static_cast<int>(g.edges.size() - 1);
+  }
+}
+
+tritri::ImplicitPoint make_lpi(const std::vector<Vec3>& V, const std::vector<Tri>& F, const LpiKey& key) {
+  auto at = [&](int id) { return id >= 0 ? V[id] : auxiliary_point(V, F[-1 - id]); };
+  return tritri::ImplicitPoint::lpi(at(key.v[0]), at(key.v[1]), at(key.v[2]), at(key.v[3]), at(key.v[4]));
+}
+
+}  // namespace
+
+IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std::vector<Tri>& F,
+                                           const std::vector<PairIntersection>& pairs) {
+  IntersectionGraph g;
+  g.num_input_vertices = static_cast<int>(V.size());
+  build_edges(F, g);
+
+  // 1. New points by definition.
+  std::vector<LpiKey> keys;
+  for (const auto& p : pairs)
+    for (const auto& q : p.points)
+      if (q.vertex < 0) keys.push_back(q.lpi);
+  sort_unique(keys);
+  std::vector<tritri::ImplicitPoint> lpis(keys.size());
+  tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { lpis[i] = make_lpi(V, F, keys[i]); });
+
+  // 2. Exact deduplication among new points: sort by exact lexicographic order; each run
+  // of equal points is represented by its smallest key index (deterministic).
+  std::vector<int> order(keys.size());
+  std::iota(order.begin(), order.end(), 0);
+  tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
+    if (tritri::less(lpis[a], lpis[b])) return true;
+    if (tritri::less(lpis[b], lpis[a])) return false;
+    return a < b;
+  });
+  std::vector<int> representative(keys.size());
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i + 1;
+    while (j < order.size() && !tritri::less(lpis[order[i]], lpis[order[j]])) ++j;
+    int rep = order[i];
+    for (std::size_t k = i; k < j; ++k) rep = std::min(rep, order[k]);
+    for (std::size_t k = i; k < j; ++k) representative[order[k]] = rep;
+    i = j;
+  }
+
+  // 3. New points that coincide with an input vertex become that vertex.
+  std::vector<int> by_position(V.size());
+  std::iota(by_position.begin(), by_position.end(), 0);
+  std::sort(by_position.begin(), by_position.end(), [&](int a, int b) { return V[a] < V[b]; });
+  std::vector<int> final_id(keys.size(), -1);
+  g.points.reserve(V.size());
+  for (const Vec3& v : V) g.points.push_back(tritri::ImplicitPoint::explicit_point(v));
+  std::vector<int> vertex_match(keys.size(), -1);
+  tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
+    if (representative[i] != static_cast<int>(i)) return;
+    auto it = std::lower_bound(by_position.begin(), by_position.end(), 0, [&](int vid, int) {
+      return tritri::less(g.points[vid], lpis[i]);
+    });
+    if (it != by_position.end() && tritri::equal(g.points[*it], lpis[i])) vertex_match[i] = *it;
+  });
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (representative[i] != static_cast<int>(i)) continue;
+    if (vertex_match[i] >= 0) {
+      final_id[i] = vertex_match[i];
+    } else {
+      final_id[i] = static_cast<int>(g.points.size());
+      g.points.push_back(lpis[i]);
+      ++g.new_points;
+    }
+  }
+  for (std::size_t i = 0; i < keys.size(); ++i) final_id[i] = final_id[representative[i]];
+
+  // 4. Record points, segments and coplanar partners per triangle and edge.
+  g.edge_points.assign(g.edges.size(), {});
+  g.triangle_points.assign(F.size(), {});
+  g.triangle_segments.assign(F.size(), {});
+  g.coplanar_partners.assign(F.size(), {});
+  auto id_of = [&](const PairPoint& q) {
+    if (q.vertex >= 0) return q.vertex;
+    return final_id[std::lower_bound(keys.begin(), keys.end(), q.lpi) - keys.begin()];
+  };
+  for (const PairIntersection& p : pairs) {
+    ++g.intersecting_pairs;
+    int ids[6];
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+      ids[i] = id_of(p.points[i]);
+      for (int k = 0; k < 2; ++k) {
+        const Location& loc = p.points[i].in[k];
+        if (loc.kind == Location::Edge) g.edge_points[g.triangle_edges[p.tri[k]][loc.id]].push_back(ids[i]);
+        if (loc.kind == Location::Interior) g.triangle_points[p.tri[k]].push_back(ids[i]);
+      }
+    }
+    for (const auto& s : p.segments) {
+      int a = ids[s.p0], b = ids[s.p1];
+      if (a == b) continue;
+      if (a > b) std::swap(a, b);
+      for (int k = 0; k < 2; ++k) g.triangle_segments[p.tri[k]].push_back({a, b});
+    }
+    if (p.coplanar) {
+      ++g.coplanar_pairs;
+      g.coplanar_partners[p.tri[0]].push_back(p.tri[1]);
+      g.coplanar_partners[p.tri[1]].push_back(p.tri[0]);
+    }
+  }
+  for (auto& v : g.edge_points) sort_unique(v);
+  for (auto& v : g.triangle_points) sort_unique(v);
+  for (auto& v : g.triangle_segments) sort_unique(v);
+  for (auto& v : g.coplanar_partners) sort_unique(v);
+  std::vector<std::array<int, 2>> all_segments;
+  for (const auto& v : g.triangle_segments) all_segments.insert(all_segments.end(), v.begin(), v.end());
+  sort_unique(all_segments);
+  g.segments = all_segments.size();
+  return g;
+}
+
+}  // namespace arrangements

@@ -1,0 +1,191 @@
+// arrangements/src/mesh_file_checks.h (internal to load_triangle_soup)
+//
+// Validators that run on a file's bytes before CGAL's reader sees them. Each one walks
+// the file the way CGAL's reader will, refuses (InputError, with a line number or an
+// item number) anything that would make the reader crash, loop, allocate without bound,
+// silently misread, or fail without saying why, and returns the counts the reader must
+// then produce (a cross-check). What each accepts is listed in load_triangle_soup.h.
+#pragma once
+
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <type_traits>
+
+#include "arrangements/input_error.h"
+
+namespace arrangements::detail {
+
+// What a validated file holds.
+struct FileCounts {
+  std::size_t vertices = 0;
+  std::size_t faces = 0;
+  std::size_t corners = 0;  // sum of the face sizes
+};
+
+FileCounts check_obj_file(const std::string& path, const std::string& bytes);
+FileCounts check_off_file(const std::string& path, const std::string& bytes);
+FileCounts check_ply_file(const std::string& path, const std::string& bytes);
+
+enum class StlEncoding { ascii, binary };
+// Binary when the size is exactly 84 + 50 x (triangle count in the header), else ASCII
+// when the first word is "solid"; throws otherwise (truncated binary, not an STL).
+StlEncoding stl_encoding(const std::string& path, const std::string& bytes);
+// vertices is left 0: CGAL's STL reader merges equal corners, so it has no file count.
+FileCounts check_stl_file(const std::string& path, const std::string& bytes, StlEncoding encoding);
+
+// ---- shared helpers --------------------------------------------------------------------
+
+[[noreturn]] inline void refuse(InputErrorKind kind, const std::string& path, const std::string& what) {
+  throw InputError(kind, path + ": " + what);
+}
+[[noreturn]] inline void refuse_at_line(InputErrorKind kind, const std::string& path, long line,
+                                        const std::string& what) {
+  refuse(kind, path, "line " + std::to_string(line) + ": " + what);
+}
+
+// A token for a message: quoted, shortened, non-printable bytes as '?'.
+inline std::string quoted(std::string_view token) {
+  constexpr std::size_t kMax = 40;
+  std::string s = "'";
+  for (std::size_t i = 0; i < token.size() && i < kMax; ++i) {
+    const unsigned char c = static_cast<unsigned char>(token[i]);
+    s += (c >= 32 && c < 127) ? static_cast<char>(c) : '?';
+  }
+  if (token.size() > kMax) s += "...";
+  return s + "'";
+}
+
+enum class RealParse { ok, not_a_number, non_finite };
+
+// Strict decimal number (optional sign, digits, '.', exponent) that must fill the whole
+// token, rounded correctly to F (float or double). Accepts exactly what the C++ stream
+// extraction in CGAL's readers accepts as a complete token, with the same value; NaN,
+// infinities and decimals beyond F's range are non_finite (the stream refuses them too).
+template <class F>
+RealParse parse_real(std::string_view token, F& value) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  if (token.empty() || token.front() == '+') return RealParse::not_a_number;
+  // from_chars also reads "inf" and "nan": they come out non-finite below.
+  const char* first = token.data();
+  const char* last = token.data() + token.size();
+  const auto r = std::from_chars(first, last, value, std::chars_format::general);
+  if (r.ptr != last) return RealParse::not_a_number;
+  if (r.ec == std::errc::result_out_of_range) {
+    // Overflow is refused; underflow rounds to a subnormal or zero, as the stream does
+    // (which calls strtod / strtof).
+    const std::string copy(token);
+    F v;
+    if constexpr (std::is_same_v<F, float>)
+      v = std::strtof(copy.c_str(), nullptr);
+    else
+      v = std::strtod(copy.c_str(), nullptr);
+    if (!std::isfinite(v)) return RealParse::non_finite;
+    value = v;
+    return RealParse::ok;
+  }
+  if (r.ec != std::errc()) return RealParse::not_a_number;
+  return std::isfinite(value) ? RealParse::ok : RealParse::non_finite;
+}
+
+// Strict integer (optional '-', digits) that fills the whole token and fits in T.
+template <class T>
+bool parse_integer(std::string_view token, T& value) {
+  if (token.empty()) return false;
+  const auto r = std::from_chars(token.data(), token.data() + token.size(), value);
+  return r.ec == std::errc() && r.ptr == token.data() + token.size();
+}
+
+inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f'; }
+
+// Walks text by tokens or by lines, counting lines (1-based).
+class TextCursor {
+ public:
+  explicit TextCursor(std::string_view text, std::size_t start = 0) : text_(text), pos_(start) {}
+
+  bool at_end() const { return pos_ >= text_.size(); }
+  long line() const { return line_; }
+  std::size_t position() const { return pos_; }
+
+  void skip_whitespace() {
+    while (pos_ < text_.size() && is_space(text_[pos_])) advance();
+  }
+  // Whitespace and comment lines ('#' up to the end of the line), as CGAL's OFF scanner.
+  void skip_whitespace_and_comments() {
+    for (;;) {
+      skip_whitespace();
+      if (pos_ < text_.size() && text_[pos_] == '#')
+        rest_of_line();
+      else
+        return;
+    }
+  }
+  char peek() const { return at_end() ? '\0' : text_[pos_]; }
+  // The run of characters from the cursor that satisfy pred (pred must refuse '\n').
+  template <class Pred>
+  std::string_view take_while(Pred pred) {
+    const std::size_t begin = pos_;
+    while (pos_ < text_.size() && pred(text_[pos_])) ++pos_;
+    return text_.substr(begin, pos_ - begin);
+  }
+  // The next whitespace-separated token (empty at the end); line() is then its line.
+  std::string_view token() {
+    skip_whitespace();
+    const std::size_t begin = pos_;
+    while (pos_ < text_.size() && !is_space(text_[pos_])) ++pos_;
+    return text_.substr(begin, pos_ - begin);
+  }
+  // The text up to the end of the current line (without '\n' and a trailing '\r'); the
+  // cursor moves to the start of the next line.
+  std::string_view rest_of_line() {
+    const std::size_t begin = pos_;
+    std::size_t end = text_.find('\n', pos_);
+    if (end == std::string_view::npos) end = text_.size();
+    pos_ = end;
+    if (pos_ < text_.size()) advance();
+    std::string_view s = text_.substr(begin, end - begin);
+    if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
+    return s;
+  }
+
+ private:
+  void advance() {
+    if (text_[pos_] == '\n') ++line_;
+    ++pos_;
+  }
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  long line_ = 1;
+};
+
+// Whitespace-separated tokens of one line.
+class LineTokens {
+ public:
+  explicit LineTokens(std::string_view line) : line_(line) {}
+  std::string_view next() {
+    while (pos_ < line_.size() && is_space(line_[pos_])) ++pos_;
+    const std::size_t begin = pos_;
+    while (pos_ < line_.size() && !is_space(line_[pos_])) ++pos_;
+    return line_.substr(begin, pos_ - begin);
+  }
+
+ private:
+  std::string_view line_;
+  std::size_t pos_ = 0;
+};
+
+// The text before the first '#'.
+inline std::string_view strip_comment(std::string_view line) {
+  const std::size_t hash = line.find('#');
+  return hash == std::string_view::npos ? line : line.substr(0, hash);
+}
+
+inline constexpr std::size_t kMaxIndexCount = static_cast<std::size_t>(std::numeric_limits<int>::max());
+
+}  // namespace arrangements::detail

@@ -1,0 +1,158 @@
+// Specification of candidate_pairs (arrangements/candidate_pairs.h):
+// - exactly the pairs i < j whose closed bounding boxes overlap, touching boxes included,
+//   boxes one ulp apart excluded; pairs that share vertices included;
+// - sorted and unique, and the same for every thread count;
+// - equal to a brute-force all-pairs box test on generated soups (grid soups with many
+//   touching boxes, random soups) and on a real mesh of the shared collection.
+#include <gtest/gtest.h>
+
+#include <arrangements/candidate_pairs.h>
+#include <arrangements/load_triangle_soup.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "shared_meshes.h"
+
+namespace {
+
+using arrangements::candidate_pairs;
+using arrangements::Tri;
+using arrangements::Vec3;
+using Pairs = std::vector<std::pair<int, int>>;
+
+// All pairs i < j whose closed boxes overlap, by the definition.
+Pairs brute_force_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F) {
+  std::vector<std::array<double, 6>> box(F.size());
+  for (std::size_t t = 0; t < F.size(); ++t)
+    for (int a = 0; a < 3; ++a) {
+      box[t][a] = std::min({V[F[t][0]][a], V[F[t][1]][a], V[F[t][2]][a]});
+      box[t][a + 3] = std::max({V[F[t][0]][a], V[F[t][1]][a], V[F[t][2]][a]});
+    }
+  Pairs out;
+  for (std::size_t i = 0; i < F.size(); ++i)
+    for (std::size_t j = i + 1; j < F.size(); ++j) {
+      bool overlap = true;
+      for (int a = 0; a < 3; ++a) overlap = overlap && box[i][a] <= box[j][a + 3] && box[j][a] <= box[i][a + 3];
+      if (overlap) out.emplace_back(static_cast<int>(i), static_cast<int>(j));
+    }
+  return out;
+}
+
+TEST(CandidatePairs, TouchingBoxesCountAndBoxesOneUlpApartDoNot) {
+  const double gap = std::nextafter(1.0, 2.0);
+  const std::vector<Vec3> V = {
+      {0, 0, 0}, {1, 0, 0}, {0, 1, 1},        // 0: box x in [0, 1]
+      {1, 0, 0.5}, {2, 1, 0.5}, {2, 0, 0.5},  // 1: x in [1, 2], shares only the plane x = 1
+      {gap, 0, 0}, {2, 0, 1}, {2, 1, 0},      // 2: x in [1 + ulp, 2]: misses 0
+      {5, 5, 5}, {6, 5, 5}, {5, 6, 5},        // 3: far away
+  };
+  const std::vector<Tri> F = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}};
+  EXPECT_EQ(candidate_pairs(V, F), (Pairs{{0, 1}, {1, 2}}));
+}
+
+TEST(CandidatePairs, IncludesPairsThatShareVerticesAndIdenticalTriangles) {
+  const std::vector<Vec3> V = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {3, 3, 3}, {4, 3, 3}, {3, 4, 3}};
+  const std::vector<Tri> F = {{0, 1, 2}, {1, 3, 2}, {2, 1, 0}, {4, 5, 6}};
+  EXPECT_EQ(candidate_pairs(V, F), (Pairs{{0, 1}, {0, 2}, {1, 2}}));
+}
+
+TEST(CandidatePairs, FewerThanTwoTrianglesGiveNoPairs) {
+  const std::vector<Vec3> V = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  EXPECT_TRUE(candidate_pairs(V, {}).empty());
+  EXPECT_TRUE(candidate_pairs(V, {{0, 1, 2}}).empty());
+}
+
+TEST(CandidatePairs, RefusesInvalidIndicesAndNonFiniteCoordinates) {
+  const std::vector<Vec3> V = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  EXPECT_THROW(candidate_pairs(V, {{0, 1, 2}, {0, 1, 3}}), std::invalid_argument);
+  EXPECT_THROW(candidate_pairs(V, {{0, 1, 2}, {-1, 1, 2}}), std::invalid_argument);
+  const std::vector<Vec3> W = {{0, 0, 0}, {1, 0, 0}, {0, INFINITY, 0}};
+  EXPECT_THROW(candidate_pairs(W, {{0, 1, 2}, {0, 1, 2}}), std::invalid_argument);
+}
+
+// Triangles with integer corners base + [0, spread) with base in [0, range): boxes touch
+// and coincide a lot.
+void grid_soup(std::mt19937& rng, int n, int range, int spread, std::vector<Vec3>& V, std::vector<Tri>& F) {
+  V.clear();
+  F.clear();
+  for (int t = 0; t < n; ++t) {
+    const double base[3] = {double(rng() % range), double(rng() % range), double(rng() % range)};
+    Tri tri;
+    for (int i = 0; i < 3; ++i) {
+      tri[i] = static_cast<int>(V.size());
+      V.push_back({base[0] + rng() % spread, base[1] + rng() % spread, base[2] + rng() % spread});
+    }
+    F.push_back(tri);
+  }
+  // Some triangles reuse existing vertices (shared corners).
+  for (int t = 0; t < n / 4; ++t)
+    F.push_back({int(rng() % V.size()), int(rng() % V.size()), int(rng() % V.size())});
+}
+
+// Small random triangles of varied size in a unit cube.
+void random_soup(std::mt19937& rng, int n, std::vector<Vec3>& V, std::vector<Tri>& F) {
+  std::uniform_real_distribution<double> unit(0, 1), size(0.001, 0.2);
+  V.clear();
+  F.clear();
+  for (int t = 0; t < n; ++t) {
+    const Vec3 c = {unit(rng), unit(rng), unit(rng)};
+    const double s = size(rng);
+    Tri tri;
+    for (int i = 0; i < 3; ++i) {
+      tri[i] = static_cast<int>(V.size());
+      V.push_back({c[0] + s * unit(rng), c[1] + s * unit(rng), c[2] + s * unit(rng)});
+    }
+    F.push_back(tri);
+  }
+}
+
+// Random triangles plus "needles" that span the whole x range: their boxes reach into
+// every part of an x-sorted split.
+void needle_soup(std::mt19937& rng, int n, std::vector<Vec3>& V, std::vector<Tri>& F) {
+  random_soup(rng, n, V, F);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int t = 0; t < n / 20; ++t) {
+    const double y = unit(rng), z = unit(rng);
+    const int first = static_cast<int>(V.size());
+    V.push_back({-0.1, y, z});
+    V.push_back({1.2, y + 0.01, z});
+    V.push_back({0.5 * unit(rng), y, z + 0.01});
+    F.push_back({first, first + 1, first + 2});
+  }
+}
+
+// Large enough soups take the parallel path (more than two chunks of 2048 triangles).
+TEST(CandidatePairs, EqualsBruteForceOnGeneratedSoupsForEveryThreadCount) {
+  std::mt19937 rng(31337);
+  std::vector<Vec3> V;
+  std::vector<Tri> F;
+  for (int trial = 0; trial < 24; ++trial) {
+    const int n = trial < 18 ? 50 + trial * 60 : 9000;
+    switch (trial % 3) {
+      case 0: n < 9000 ? grid_soup(rng, n, 1, 2 + trial % 5, V, F) : grid_soup(rng, n, 30, 3, V, F); break;
+      case 1: random_soup(rng, n, V, F); break;
+      case 2: needle_soup(rng, n, V, F); break;
+    }
+    const Pairs expected = brute_force_pairs(V, F);
+    for (int threads : {1, 2, 3, 0}) ASSERT_EQ(candidate_pairs(V, F, threads), expected) << trial << " " << threads;
+  }
+}
+
+TEST(CandidatePairs, EqualsBruteForceOnRealMeshes) {
+  for (const char* name : {"cherchi_arrangements/two_spheres.stl", "libigl_tutorial/bunny.off"}) {
+    const std::filesystem::path file = tritri_test::shared_meshes_dir() / name;
+    if (!std::filesystem::exists(file)) GTEST_SKIP() << "no " << file;
+    const arrangements::TriangleSoup s = arrangements::load_triangle_soup(file.string());
+    const Pairs expected = brute_force_pairs(s.vertices, s.triangles);
+    ASSERT_GT(expected.size(), s.triangles.size()) << name;  // neighbours share vertices: many pairs
+    for (int threads : {1, 2, 0}) EXPECT_EQ(candidate_pairs(s.vertices, s.triangles, threads), expected) << name;
+  }
+}
+
+}  // namespace

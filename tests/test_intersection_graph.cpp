@@ -1,0 +1,190 @@
+// The classification stage on whole meshes (candidate pairs, native classifier, global
+// deduplication) against a brute-force reference: every pair of triangles whose boxes
+// overlap, classified by tritri on exact rationals, with the points built exactly from
+// their types. The set of intersection points must be the same, point for point.
+#include <gtest/gtest.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/intersections.h>
+
+#include <tritri/tritri.h>
+
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "arrangements/candidate_pairs.h"
+#include "arrangements/classify_pairs.h"
+#include "arrangements/intersection_graph.h"
+#include "arrangements/load_triangle_soup.h"
+#include "arrangements/mesh_generators.h"
+#include "arrangements/preprocess.h"
+#include "arrangements/propagate_coplanar.h"
+
+namespace {
+
+using namespace arrangements;
+using EK = CGAL::Epeck;
+using EP = EK::Point_3;
+using Exact = std::array<mpq_class, 3>;
+
+Exact exact(const EP& p) { return {CGAL::exact(p.x()), CGAL::exact(p.y()), CGAL::exact(p.z())}; }
+Exact exact(const tritri::ImplicitPoint& p) {
+  const auto q = tritri::to_exact(p);
+  return {mpq_class(q[0].mpq()), mpq_class(q[1].mpq()), mpq_class(q[2].mpq())};
+}
+EP ep(const Vec3& v) { return EP(v[0], v[1], v[2]); }
+
+EP line_plane(const EP& p, const EP& q, const EP& a, const EP& b, const EP& c) {
+  auto r = CGAL::intersection(EK::Line_3(p, q), EK::Plane_3(a, b, c));
+  return *boost::get<EP>(&*r);
+}
+EP line_line(const EP& p, const EP& q, const EP& r, const EP& s) {
+  auto x = CGAL::intersection(EK::Line_3(p, q), EK::Line_3(r, s));
+  return *boost::get<EP>(&*x);
+}
+
+bool boxes_overlap(const std::vector<Vec3>& V, const Tri& a, const Tri& b) {
+  for (int k = 0; k < 3; ++k) {
+    const double alo = std::min({V[a[0]][k], V[a[1]][k], V[a[2]][k]});
+    const double ahi = std::max({V[a[0]][k], V[a[1]][k], V[a[2]][k]});
+    const double blo = std::min({V[b[0]][k], V[b[1]][k], V[b[2]][k]});
+    const double bhi = std::max({V[b[0]][k], V[b[1]][k], V[b[2]][k]});
+    if (ahi < blo || bhi < alo) return false;
+  }
+  return true;
+}
+
+// Brute force: exact coordinates of every intersection point, and the number of pairs
+// that intersect beyond shared vertices.
+std::set<Exact> reference_points(const std::vector<Vec3>& V, const std::vector<Tri>& F, std::size_t& pairs) {
+  using GK = tritri::CgalKernel<CGAL::Simple_cartesian<CGAL::Gmpq>>;
+  using GP = GK::Point;
+  std::vector<GP> G;
+  for (const Vec3& v : V) G.emplace_back(v[0], v[1], v[2]);
+  std::set<Exact> out;
+  pairs = 0;
+  for (std::size_t i = 0; i < F.size(); ++i)
+    for (std::size_t j = i + 1; j < F.size(); ++j) {
+      const Tri &a = F[i], &b = F[j];
+      if (!boxes_overlap(V, a, b)) continue;
+      const tritri::Result r = tritri::classify<GK>(G[a[0]], G[a[1]], G[a[2]], G[b[0]], G[b[1]], G[b[2]]);
+      bool only_shared = true;
+      for (const auto& p : r.points) only_shared &= p.type == tritri::Type::VA_ON_VB;
+      if (!r.intersects() || only_shared) continue;
+      ++pairs;
+      for (const auto& p : r.points) {
+        const int i0 = p.id0, i1 = p.id1;
+        auto A = [&](int k) { return ep(V[a[k % 3]]); };
+        auto B = [&](int k) { return ep(V[b[k % 3]]); };
+        EP x;
+        switch (p.type) {
+          case tritri::Type::VA_ON_VB:
+          case tritri::Type::VA_ON_EB:
+          case tritri::Type::VA_ON_TB: x = A(i0); break;
+          case tritri::Type::VB_ON_EA:
+          case tritri::Type::VB_ON_TA: x = B(i0); break;
+          case tritri::Type::EA_CROSS_EB: x = line_line(A(i0), A(i0 + 1), B(i1), B(i1 + 1)); break;
+          case tritri::Type::EA_CROSS_TB: x = line_plane(A(i0), A(i0 + 1), B(0), B(1), B(2)); break;
+          case tritri::Type::EB_CROSS_TA: x = line_plane(B(i0), B(i0 + 1), A(0), A(1), A(2)); break;
+        }
+        out.insert(exact(x));
+      }
+    }
+  return out;
+}
+
+void expect_matches_reference(const TriangleSoup& input, const std::string& what) {
+  PreprocessStats stats;
+  const TriangleSoup soup = preprocess(input, PreprocessOptions{}, stats);
+  const auto& V = soup.vertices;
+  const auto& F = soup.triangles;
+  const auto records = classify_pairs(V, F, candidate_pairs(V, F), Classifier::Native);
+  IntersectionGraph g = build_intersection_graph(V, F, records);
+  propagate_coplanar(V, F, g);
+
+  std::size_t reference_pairs = 0;
+  const std::set<Exact> expected = reference_points(V, F, reference_pairs);
+  std::set<Exact> got;
+  for (const auto& rec : records)
+    for (const auto& p : rec.points) {
+      const int id = p.vertex >= 0 ? p.vertex : -1;
+      if (id >= 0) got.insert(exact(g.points[id]));
+    }
+  // New points: every point of the graph beyond the input vertices.
+  for (std::size_t i = V.size(); i < g.points.size(); ++i) got.insert(exact(g.points[i]));
+  EXPECT_EQ(reference_pairs, g.intersecting_pairs) << what;
+  EXPECT_EQ(expected.size(), got.size()) << what;
+  EXPECT_TRUE(expected == got) << what;
+
+  // New points are pairwise distinct and distinct from every input vertex (exact dedup).
+  std::set<Exact> vertices;
+  for (const Vec3& v : V) vertices.insert({mpq_class(v[0]), mpq_class(v[1]), mpq_class(v[2])});
+  std::set<Exact> fresh;
+  for (std::size_t i = V.size(); i < g.points.size(); ++i) {
+    const Exact e = exact(g.points[i]);
+    EXPECT_EQ(vertices.count(e), 0u) << what;
+    EXPECT_TRUE(fresh.insert(e).second) << what;
+  }
+  // Every recorded point lies where it is recorded: inside its triangle or edge.
+  for (std::size_t t = 0; t < F.size(); ++t) {
+    const EK::Triangle_3 tri(ep(V[F[t][0]]), ep(V[F[t][1]]), ep(V[F[t][2]]));
+    for (int x : g.triangle_points[t]) {
+      const auto e = exact(g.points[x]);
+      const EP p{EK::FT(e[0]), EK::FT(e[1]), EK::FT(e[2])};
+      EXPECT_TRUE(tri.has_on(p)) << what << " triangle " << t;
+      for (int k = 0; k < 3; ++k)
+        EXPECT_FALSE(EK::Segment_3(tri.vertex(k), tri.vertex((k + 1) % 3)).has_on(p)) << what;
+    }
+  }
+  for (std::size_t e = 0; e < g.edges.size(); ++e)
+    for (int x : g.edge_points[e]) {
+      const auto c = exact(g.points[x]);
+      const EP p{EK::FT(c[0]), EK::FT(c[1]), EK::FT(c[2])};
+      const EP a = ep(V[g.edges[e][0]]), b = ep(V[g.edges[e][1]]);
+      EXPECT_TRUE(EK::Segment_3(a, b).has_on(p) && p != a && p != b) << what << " edge " << e;
+    }
+}
+
+TEST(IntersectionGraph, TwoSpheres) {
+  expect_matches_reference(concatenate(uv_sphere({0, 0, 0}, 1.0, 10, 16), uv_sphere({0.7, 0.3, 0.2}, 0.8, 9, 14)),
+                           "two spheres");
+}
+
+TEST(IntersectionGraph, CubeThroughCube) {
+  expect_matches_reference(concatenate(box({0, 0, 0}, {2, 2, 2}), box({1, -1, 0.5}, {3, 3, 1.5})),
+                           "cube through cube");
+}
+
+TEST(IntersectionGraph, CoplanarOverlappingGrids) {
+  // Same plane, shifted by half a cell and by a third: many coplanar crossings.
+  expect_matches_reference(concatenate(grid(6, 1.0, 0.0), grid(5, 1.0, 0.0, 0.5, 0.25)), "coplanar grids");
+  expect_matches_reference(concatenate(grid(4, 1.0, 0.0), grid(4, 1.0, 0.0, 1.0, 0.0)), "grids sharing cells");
+}
+
+TEST(IntersectionGraph, GridThroughSpheres) {
+  expect_matches_reference(concatenate(grid(8, 0.25, 0.0, -1, -1), uv_sphere({0, 0, 0}, 0.9, 8, 12)),
+                           "grid through sphere");
+}
+
+TEST(IntersectionGraph, SmallSharedMeshes) {
+  const std::filesystem::path dir = "/work/shared/meshes";
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared meshes";
+  int checked = 0;
+  for (const char* name : {"cherchi_arrangements/two_spheres.stl", "cherchi_arrangements/three_cubes.stl",
+                           "cgal_data/mask_cone.off", "trimesh/soup.stl"}) {
+    if (!std::filesystem::exists(dir / name)) continue;
+    expect_matches_reference(load_triangle_soup((dir / name).string()), name);
+    ++checked;
+  }
+  // The 2- and 3-triangle configurations.
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "cherchi_arrangements")) {
+    if (entry.path().extension() != ".off") continue;
+    expect_matches_reference(load_triangle_soup(entry.path().string()), entry.path().filename().string());
+    ++checked;
+  }
+  EXPECT_GT(checked, 0);
+}
+
+}  // namespace
