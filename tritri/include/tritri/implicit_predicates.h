@@ -76,6 +76,17 @@ std::array<T, N> scaled_difference(const ImplicitPoint& p, const ImplicitPoint::
   return out;
 }
 
+// The same for all three axes.
+template <class T, class Get>
+std::array<T, 3> scaled_difference3(const ImplicitPoint& p, const ImplicitPoint::Coords& c, const Get& get) {
+  if (p.is_explicit()) {
+    const auto& x = p.approx();
+    return {T(x[0]) - T(c[0]), T(x[1]) - T(c[1]), T(x[2]) - T(c[2])};
+  }
+  const auto& h = get(p);
+  return {h.x - T(c[0]) * h.w, h.y - T(c[1]) * h.w, h.z - T(c[2]) * h.w};
+}
+
 template <class T>
 std::array<T, 4> row4(const Homogeneous<T>& h) {
   return {h.x, h.y, h.z, h.w};
@@ -155,13 +166,14 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
   if (e >= 0) {
     // orient3d = (-1)^e det3(rows W_i (p_i - p_e), i != e, in order) * prod sign(W_i).
     const auto& ref = pts[e]->approx();
+    // The three operands other than e, in order.
+    const ImplicitPoint& p0 = *pts[e == 0 ? 1 : 0];
+    const ImplicitPoint& p1 = *pts[e <= 1 ? 2 : 1];
+    const ImplicitPoint& p2 = *pts[e <= 2 ? 3 : 2];
     const int s = detail::staged_sign([&](auto tag, const auto& get) {
       using T = decltype(tag);
-      std::array<T, 3> rows[3];
-      int n = 0;
-      for (int i = 0; i < 4; ++i)
-        if (i != e) rows[n++] = detail::scaled_difference<T>(*pts[i], ref, std::array<int, 3>{0, 1, 2}, get);
-      return detail::det3(rows[0], rows[1], rows[2]);
+      return detail::det3(detail::scaled_difference3<T>(p0, ref, get), detail::scaled_difference3<T>(p1, ref, get),
+                          detail::scaled_difference3<T>(p2, ref, get));
     });
     return detail::to_sign((e % 2 ? -s : s) * w);
   }

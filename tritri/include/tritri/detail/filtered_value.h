@@ -18,11 +18,11 @@
 namespace tritri::detail {
 
 struct FilteredValue {
-  double v = 0;     // value computed in double
-  double perm = 0;  // bound on the sum of |monomials| (plus underflow floors)
-  int depth = 0;    // roundings per monomial
+  double v;     // value computed in double
+  double perm;  // bound on the sum of |monomials| (plus underflow floors)
+  int depth;    // roundings per monomial
 
-  FilteredValue() = default;
+  FilteredValue() = default;  // uninitialised, like a double
   FilteredValue(double x) : v(x), perm(x < 0 ? -x : x), depth(0) {}  // exact leaf
   FilteredValue(double v_, double p_, int d_) : v(v_), perm(p_), depth(d_) {}
 
