@@ -182,12 +182,15 @@ TEST(ClassifyOracle, GeneratedPairsMatchExactCgalIntersection) {
   log.report();
   EXPECT_EQ(log.count(), 0) << "failures per generator:\n" << log.summary();
   EXPECT_EQ(coverage.pairs, n);
-  // The generators must reach every type and every shape of the intersection.
-  for (int t = 0; t < 8; ++t)
-    EXPECT_GT(coverage.by_type[t], 0) << tritri::to_string(static_cast<tritri::Type>(t));
-  for (int k = 0; k <= 6; ++k) EXPECT_GT(coverage.by_size[k], 0) << k << " points";
-  EXPECT_GT(coverage.coplanar, n / 10);
-  EXPECT_GT(coverage.degenerate, 0);
+  // The generators must reach every type and every shape of the intersection (checked from
+  // 20,000 pairs on: hexagons are about 0.3% of the pairs).
+  if (n >= 20'000) {
+    for (int t = 0; t < 8; ++t)
+      EXPECT_GT(coverage.by_type[t], 0) << tritri::to_string(static_cast<tritri::Type>(t));
+    for (int k = 0; k <= 6; ++k) EXPECT_GT(coverage.by_size[k], 0) << k << " points";
+    EXPECT_GT(coverage.coplanar, n / 10);
+    EXPECT_GT(coverage.degenerate, 0);
+  }
 }
 
 // The oracle itself must be able to fail: every corruption of a correct Result (a point

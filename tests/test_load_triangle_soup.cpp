@@ -454,7 +454,7 @@ std::map<std::string, ManifestRow> read_manifest(const fs::path& csv) {
 }
 
 bool is_mesh_extension(std::string ext) {
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext == ".obj" || ext == ".off" || ext == ".stl" || ext == ".ply";
 }
 
@@ -483,8 +483,9 @@ TEST(SharedMeshes, EveryMeshFileLoadsOrIsRefusedWithInputErrorAndMatchesTheManif
       if (row == manifest.end()) continue;
       ++compared;
       EXPECT_EQ(std::to_string(s.triangles.size()), row->second.triangles) << relative;
-      if (row->second.format.rfind("stl", 0) != 0)
+      if (row->second.format.rfind("stl", 0) != 0) {
         EXPECT_EQ(std::to_string(s.vertices.size()), row->second.vertices) << relative;
+      }
     } catch (const InputError& e) {
       refused[arrangements::to_string(e.kind)].push_back(e.what());
     } catch (const std::exception& e) {

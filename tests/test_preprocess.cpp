@@ -336,7 +336,8 @@ TEST(Preprocess, RefusesScalingThatWouldRoundACoordinate) {
 TEST(Preprocess, ScalingChangesNothingButTheCoordinates) {
   std::mt19937 rng(99);
   std::vector<Vec3> v;
-  for (int i = 0; i < 60; ++i) v.push_back({double(rng() % 5) * 0.125, double(rng() % 5) * 0.125, double(rng() % 3) * 0.125});
+  for (int i = 0; i < 60; ++i)
+    v.push_back({double(rng() % 5) * 0.125, double(rng() % 5) * 0.125, double(rng() % 3) * 0.125});
   v.push_back({0, 0, 0});
   v.push_back({0.5, 0, 0});  // the largest coordinate: 0.5 = 0.5 * 2^0, so k = 10
   v.push_back({0, 0.125, 0});

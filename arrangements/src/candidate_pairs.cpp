@@ -69,17 +69,24 @@ Pairs overlapping_pairs(std::vector<Box>& boxes, int workers) {
     tbb::parallel_sort(boxes.begin(), boxes.end(),
                        [](const Box& a, const Box& b) { return a.min_coord(0) < b.min_coord(0); });
     auto first_of = [&](std::size_t chunk) { return chunk * boxes.size() / chunks; };
+    // Chunk j reports the pairs whose later box (in x order) lies in it: one complete
+    // self-intersection search over its boxes plus the earlier boxes that reach into it,
+    // keeping pairs with a box of the chunk. (CGAL's bipartite mode loses pairs of closed
+    // boxes that only touch, so it is not used.)
     tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t j) {
-      std::vector<Box> mine(boxes.begin() + first_of(j), boxes.begin() + first_of(j + 1));
       const double start = boxes[first_of(j)].min_coord(0);
-      std::vector<Box> reaching;
+      std::vector<Box> local;
       for (std::size_t i = 0; i < first_of(j); ++i)
-        if (boxes[i].max_coord(0) >= start) reaching.push_back(boxes[i]);
-      CGAL::box_self_intersection_d<CGAL::Sequential_tag>(mine.begin(), mine.end(), report, traits, cutoff, closed);
-      if (!reaching.empty())
-        CGAL::box_intersection_d<CGAL::Sequential_tag>(reaching.begin(), reaching.end(), mine.begin(), mine.end(),
-                                                       report, traits, cutoff, closed,
-                                                       CGAL::Box_intersection_d::BIPARTITE);
+        if (boxes[i].max_coord(0) >= start) local.push_back(boxes[i]);
+      const std::size_t reaching = local.size();
+      std::vector<char> in_chunk(boxes.size(), 0);  // by triangle index
+      local.insert(local.end(), boxes.begin() + first_of(j), boxes.begin() + first_of(j + 1));
+      for (std::size_t i = reaching; i < local.size(); ++i) in_chunk[local[i].info()] = 1;
+      auto report_chunk = [&](const Box& a, const Box& b) {
+        if (in_chunk[a.info()] || in_chunk[b.info()]) report(a, b);
+      };
+      CGAL::box_self_intersection_d<CGAL::Sequential_tag>(local.begin(), local.end(), report_chunk, traits, cutoff,
+                                                          closed);
     });
   }
   Pairs all;

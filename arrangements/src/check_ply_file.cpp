@@ -96,7 +96,8 @@ const PlyProperty* find_property(const PlyElement& e, std::string_view name) {
 PlyHeader read_header(const std::string& path, const std::string& bytes) {
   PlyHeader h;
   TextCursor cursor(bytes);
-  if (LineTokens(cursor.rest_of_line()).next() != "ply") refuse_at_line(InputErrorKind::malformed, path, 1, "not a PLY file (no 'ply')");
+  if (LineTokens(cursor.rest_of_line()).next() != "ply")
+    refuse_at_line(InputErrorKind::malformed, path, 1, "not a PLY file (no 'ply')");
   {
     LineTokens tokens(cursor.rest_of_line());
     tokens.next();

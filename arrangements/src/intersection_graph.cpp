@@ -37,6 +37,24 @@ void build_edges(const std::vector<Tri>& F, IntersectionGraph& g) {
   }
 }
 
+// A combinatorial name of a new point: (0, LPI ids) for an edge crossing a face,
+// (1, edge, edge) for two crossing edges, edges as sorted vertex ids.
+using PointName = std::array<int, 6>;
+
+PointName point_name(const std::vector<Tri>& F, const PairIntersection& p, const PairPoint& q) {
+  if (q.in[0].kind == Location::Edge && q.in[1].kind == Location::Edge) {
+    std::array<int, 2> e[2];
+    for (int k = 0; k < 2; ++k) {
+      const Tri& t = F[p.tri[k]];
+      e[k] = {t[q.in[k].id], t[(q.in[k].id + 1) % 3]};
+      if (e[k][0] > e[k][1]) std::swap(e[k][0], e[k][1]);
+    }
+    if (e[1] < e[0]) std::swap(e[0], e[1]);
+    return {1, e[0][0], e[0][1], e[1][0], e[1][1], 0};
+  }
+  return {0, q.lpi.v[0], q.lpi.v[1], q.lpi.v[2], q.lpi.v[3], q.lpi.v[4]};
+}
+
 tritri::ImplicitPoint make_lpi(const std::vector<Vec3>& V, const std::vector<Tri>& F, const LpiKey& key) {
   auto at = [&](int id) { return id >= 0 ? V[id] : auxiliary_point(V, F[-1 - id]); };
   return tritri::ImplicitPoint::lpi(at(key.v[0]), at(key.v[1]), at(key.v[2]), at(key.v[3]), at(key.v[4]));
@@ -50,12 +68,21 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   g.num_input_vertices = static_cast<int>(V.size());
   build_edges(F, g);
 
-  // 1. New points by definition.
-  std::vector<LpiKey> keys;
+  // 1. New points by definition. A crossing of two edges is named by the two edges (its
+  // LPI may use the plane of either triangle on either side, so several pairs describe
+  // it differently); an edge crossing a face by its LPI. Each name keeps its smallest LPI.
+  std::vector<std::pair<PointName, LpiKey>> named;
   for (const auto& p : pairs)
     for (const auto& q : p.points)
-      if (q.vertex < 0) keys.push_back(q.lpi);
-  sort_unique(keys);
+      if (q.vertex < 0) named.emplace_back(point_name(F, p, q), q.lpi);
+  sort_unique(named);
+  std::vector<PointName> names;
+  std::vector<LpiKey> keys;
+  for (const auto& [name, lpi] : named)
+    if (names.empty() || names.back() != name) {
+      names.push_back(name);
+      keys.push_back(lpi);
+    }
   std::vector<tritri::ImplicitPoint> lpis(keys.size());
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { lpis[i] = make_lpi(V, F, keys[i]); });
 
@@ -110,15 +137,15 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   g.triangle_points.assign(F.size(), {});
   g.triangle_segments.assign(F.size(), {});
   g.coplanar_partners.assign(F.size(), {});
-  auto id_of = [&](const PairPoint& q) {
+  auto id_of = [&](const PairIntersection& p, const PairPoint& q) {
     if (q.vertex >= 0) return q.vertex;
-    return final_id[std::lower_bound(keys.begin(), keys.end(), q.lpi) - keys.begin()];
+    return final_id[std::lower_bound(names.begin(), names.end(), point_name(F, p, q)) - names.begin()];
   };
   for (const PairIntersection& p : pairs) {
     ++g.intersecting_pairs;
     int ids[6];
     for (std::size_t i = 0; i < p.points.size(); ++i) {
-      ids[i] = id_of(p.points[i]);
+      ids[i] = id_of(p, p.points[i]);
       for (int k = 0; k < 2; ++k) {
         const Location& loc = p.points[i].in[k];
         if (loc.kind == Location::Edge) g.edge_points[g.triangle_edges[p.tri[k]][loc.id]].push_back(ids[i]);

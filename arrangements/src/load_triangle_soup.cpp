@@ -49,7 +49,7 @@ enum class Format { obj, off, stl, ply };
 
 Format format_of(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (ext == ".obj") return Format::obj;
   if (ext == ".off") return Format::off;
   if (ext == ".stl") return Format::stl;

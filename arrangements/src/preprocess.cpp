@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <iterator>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -79,29 +78,12 @@ void check_well_formed(const TriangleSoup& in) {
   }
 }
 
-// Label sets of the kept triangles: the input's sets plus the unions made by merges.
-class LabelSetTable {
- public:
-  explicit LabelSetTable(const std::vector<LabelSet>& input) : sets_(input) {
-    for (LabelSet& s : sets_) {
-      std::sort(s.begin(), s.end());
-      s.erase(std::unique(s.begin(), s.end()), s.end());
-    }
-  }
-  // The index of sets_[a] united with sets_[b].
-  int unite(int a, int b) {
-    if (a == b || std::includes(sets_[a].begin(), sets_[a].end(), sets_[b].begin(), sets_[b].end())) return a;
-    LabelSet u;
-    std::set_union(sets_[a].begin(), sets_[a].end(), sets_[b].begin(), sets_[b].end(), std::back_inserter(u));
-    sets_.push_back(std::move(u));
-    return static_cast<int>(sets_.size()) - 1;
-  }
-  const LabelSet& operator[](int i) const { return sets_[i]; }
-  std::size_t size() const { return sets_.size(); }
-
- private:
-  std::vector<LabelSet> sets_;
-};
+// Sorted, without repeats.
+LabelSet normalized(LabelSet s) {
+  std::sort(s.begin(), s.end());
+  s.erase(std::unique(s.begin(), s.end()), s.end());
+  return s;
+}
 
 // k such that max_abs * 2^k is in [2^9, 2^10); 0 for max_abs == 0.
 int scale_exponent_for(double max_abs) {
@@ -118,7 +100,7 @@ void scale_exactly(std::vector<Vec3>& vertices, int k) {
         std::ostringstream msg;
         msg.precision(17);
         msg << "scaling by 2^" << k << " would round coordinate " << c << " of vertex " << v
-            << " (the coordinates span too many binary orders of magnitude)";
+            << " (after merging): the coordinates span too many binary orders of magnitude";
         throw InputError(InputErrorKind::unscalable, msg.str());
       }
   for (Vec3& p : vertices)
@@ -146,18 +128,21 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
   }
   stats.merged_vertices = in.vertices.size() - positions.size();
 
-  // Kept triangles (corners as position ids) and their label-set indices into `table`.
+  // Kept triangles (corners as position ids), their input label-set indices, and the
+  // labels their duplicates add (appended, sorted once at the end: merging k copies with
+  // distinct labels stays linear in the number of labels).
   std::vector<Tri> kept;
   std::vector<int> kept_set;
   std::vector<std::int64_t> kept_source;
-  LabelSetTable table(in.label_sets);
+  std::unordered_map<int, std::vector<std::uint32_t>> added_labels;
   {
     std::unordered_map<Tri, int, CornerSetHash> kept_by_corners;
     kept_by_corners.reserve(in.triangles.size());
     for (std::size_t t = 0; t < in.triangles.size(); ++t) {
       const Tri& tri = in.triangles[t];
       const Tri p = {position_of[tri[0]], position_of[tri[1]], position_of[tri[2]]};
-      if (p[0] == p[1] || p[1] == p[2] || p[0] == p[2] || collinear(positions[p[0]], positions[p[1]], positions[p[2]])) {
+      const bool repeated = p[0] == p[1] || p[1] == p[2] || p[0] == p[2];
+      if (repeated || collinear(positions[p[0]], positions[p[1]], positions[p[2]])) {
         ++stats.removed_degenerate;
         continue;
       }
@@ -166,7 +151,11 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
       const auto [it, inserted] = kept_by_corners.try_emplace(key, static_cast<int>(kept.size()));
       if (!inserted) {
         ++stats.removed_duplicate;
-        kept_set[it->second] = table.unite(kept_set[it->second], in.labels[t]);
+        if (in.labels[t] != kept_set[it->second]) {
+          const LabelSet& labels = in.label_sets[in.labels[t]];
+          std::vector<std::uint32_t>& added = added_labels[it->second];
+          added.insert(added.end(), labels.begin(), labels.end());
+        }
         continue;
       }
       kept.push_back(p);
@@ -178,8 +167,14 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
   // Output vertices and label sets in first-use order.
   TriangleSoup out;
   std::vector<int> out_vertex(positions.size(), -1);
-  std::vector<int> out_set(table.size(), -1);
-  std::map<LabelSet, int> out_set_by_content;  // merges may rebuild an existing set
+  std::vector<int> out_set_of_input_set(in.label_sets.size(), -1);
+  std::map<LabelSet, int> out_set_by_content;  // equal sets are stored once
+  auto out_set_of = [&](LabelSet labels) {
+    const int next = static_cast<int>(out.label_sets.size());
+    const auto [it, inserted] = out_set_by_content.try_emplace(std::move(labels), next);
+    if (inserted) out.label_sets.push_back(it->first);
+    return it->second;
+  };
   out.triangles.reserve(kept.size());
   out.labels.reserve(kept.size());
   for (std::size_t t = 0; t < kept.size(); ++t) {
@@ -193,14 +188,16 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
       tri[i] = id;
     }
     out.triangles.push_back(tri);
-    int& set = out_set[kept_set[t]];
-    if (set < 0) {
-      const auto [it, inserted] =
-          out_set_by_content.try_emplace(table[kept_set[t]], static_cast<int>(out.label_sets.size()));
-      if (inserted) out.label_sets.push_back(table[kept_set[t]]);
-      set = it->second;
+    const auto added = added_labels.find(static_cast<int>(t));
+    if (added != added_labels.end()) {
+      LabelSet labels = in.label_sets[kept_set[t]];
+      labels.insert(labels.end(), added->second.begin(), added->second.end());
+      out.labels.push_back(out_set_of(normalized(std::move(labels))));
+    } else {
+      int& set = out_set_of_input_set[kept_set[t]];
+      if (set < 0) set = out_set_of(normalized(in.label_sets[kept_set[t]]));
+      out.labels.push_back(set);
     }
-    out.labels.push_back(set);
   }
   out.source = std::move(kept_source);
   stats.unreferenced_vertices = positions.size() - out.vertices.size();

@@ -2,6 +2,7 @@
 // See --help.
 #include <tbb/global_control.h>
 #include <tbb/info.h>
+#include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
@@ -40,12 +41,19 @@ options:
 
 JSON keys (--stats): in_vertices, in_triangles, merged_vertices, removed_degenerate,
 removed_duplicate, candidate_pairs, intersecting_pairs, intersection_points (distinct new
-points), lpi, segments, coplanar_pairs, threads, t_load_s, t_preprocess_s, t_detect_s,
-t_classify_s.
+points), lpi, segments (distinct constraint segments), tri_segments (summed over
+triangles), coplanar_pairs, classifier, threads, t_load_s, t_preprocess_s, t_detect_s,
+t_classify_s, t_total_s, peak_rss_mb.
 
 exit status: 0 success, 1 bad input (unreadable, unknown format, malformed, NaN/Inf,
 out-of-range indices, empty mesh), 2 bad command line.
 )";
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // kilobytes on Linux
+}
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -105,7 +113,8 @@ int main(int argc, char** argv) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, workers);
 
   try {
-    auto t0 = std::chrono::steady_clock::now();
+    const auto start = std::chrono::steady_clock::now();
+    auto t0 = start;
     const TriangleSoup input = load_triangle_soups(inputs);
     const double t_load = seconds_since(t0);
 
@@ -126,17 +135,21 @@ int main(int argc, char** argv) {
     propagate_coplanar(soup.vertices, soup.triangles, graph);
     const double t_classify = seconds_since(t0);
 
+    std::size_t tri_segments = 0;
+    for (const auto& s : graph.triangle_segments) tri_segments += s.size();
     if (stats) {
       std::printf(
           "{\"in_vertices\": %zu, \"in_triangles\": %zu, \"merged_vertices\": %zu, "
           "\"removed_degenerate\": %zu, \"removed_duplicate\": %zu, \"candidate_pairs\": %zu, "
           "\"intersecting_pairs\": %zu, \"intersection_points\": %zu, \"lpi\": %zu, \"segments\": %zu, "
-          "\"coplanar_pairs\": %zu, \"classifier\": \"%s\", \"threads\": %d, \"t_load_s\": %.6f, "
-          "\"t_preprocess_s\": %.6f, \"t_detect_s\": %.6f, \"t_classify_s\": %.6f}\n",
+          "\"tri_segments\": %zu, \"coplanar_pairs\": %zu, \"classifier\": \"%s\", \"threads\": %d, "
+          "\"t_load_s\": %.6f, \"t_preprocess_s\": %.6f, \"t_detect_s\": %.6f, \"t_classify_s\": %.6f, "
+          "\"t_total_s\": %.6f, \"peak_rss_mb\": %.1f}\n",
           input.vertices.size(), input.triangles.size(), static_cast<std::size_t>(pre.merged_vertices),
           static_cast<std::size_t>(pre.removed_degenerate), static_cast<std::size_t>(pre.removed_duplicate),
-          pairs.size(), graph.intersecting_pairs, graph.new_points, graph.new_points, graph.segments,
-          graph.coplanar_pairs, classifier.c_str(), workers, t_load, t_preprocess, t_detect, t_classify);
+          pairs.size(), graph.intersecting_pairs, graph.new_points, graph.new_points, graph.segments, tri_segments,
+          graph.coplanar_pairs, classifier.c_str(), workers, t_load, t_preprocess, t_detect, t_classify,
+          seconds_since(start), peak_rss_mb());
     }
     return 0;
   } catch (const InputError& e) {

@@ -15,7 +15,8 @@
 // TriangleSoup load_triangle_soups(paths)
 //   File i is loaded with label i; the soups are concatenated in order (vertex indices are
 //   offset; `source` continues across files, so it indexes the concatenated fan-triangle
-//   lists); label_sets = {{0}, {1}, ...}, labels[t] = the index of t's file.
+//   lists); label_sets = {{0}, {1}, ...}, labels[t] = the index of t's file. No paths:
+//   an empty soup.
 //
 // Polygons: a face with corners c0 c1 ... c(n-1), n > 3, becomes the fan from its first
 // corner, (c0, c_i, c_(i+1)) for i = 1 .. n-2, in that order. This is exact (no new
@@ -28,6 +29,8 @@
 // those readers crash, loop or silently misread on some bad input, every file is first
 // checked by a small validator of our own (which also finds line numbers for the
 // messages), and the readers' output is checked again afterwards:
+//   Numbers in text files are decimal (what C++ streams read as one whole token); values
+//   that underflow become subnormal or zero, as the streams make them.
 //   OBJ  v / f statements (f corners i, i/t, i/t/n, i//n; negative = relative); vt, vn,
 //        comments and the statements CGAL accepts (g, o, s, usemtl, ...) are ignored.
 //        Index 0, an index beyond the vertices (positive: of the file; negative: defined
@@ -37,7 +40,8 @@
 //        later vertex (face) lines need them too (CGAL reads them from then on).
 //        Binary OFF and the ST / 4 / n / SKEL variants are refused as unsupported.
 //   STL  binary when the size is exactly 84 + 50 x (the header's triangle count), else
-//        ASCII when it begins with "solid", else refused (truncated or malformed).
+//        ASCII when it begins with "solid" and has no NUL byte, else refused (truncated
+//        or malformed).
 //   PLY  ascii, binary_little_endian, binary_big_endian; element vertex with float or
 //        double x, y, z; element face with a list vertex_indices (or vertex_index) of
 //        int or uint. Other elements and properties are skipped.

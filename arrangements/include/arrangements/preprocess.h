@@ -44,7 +44,8 @@
 //
 // Throws std::invalid_argument for an ill-formed soup (index or label index out of range,
 // sizes that do not match, a non-finite coordinate).
-// Cost: expected O(#V + #F) (hashing), plus one orient2d per triangle and projection.
+// Cost: expected O(#V + #F + total labels of duplicates) (hashing), plus one to three exact
+// orient2d per triangle; distinct label sets are kept in a std::map.
 #pragma once
 
 #include <cstddef>
