@@ -10,6 +10,9 @@
 
 #include <tritri/tritri.h>
 
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -17,10 +20,12 @@
 #include "arrangements/candidate_pairs.h"
 #include "arrangements/classify_pairs.h"
 #include "arrangements/intersection_graph.h"
+#include "arrangements/input_error.h"
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/mesh_generators.h"
 #include "arrangements/preprocess.h"
 #include "arrangements/propagate_coplanar.h"
+#include "shared_meshes.h"
 
 namespace {
 
@@ -169,7 +174,7 @@ TEST(IntersectionGraph, GridThroughSpheres) {
 }
 
 TEST(IntersectionGraph, SmallSharedMeshes) {
-  const std::filesystem::path dir = "/work/shared/meshes";
+  const std::filesystem::path dir = tritri_test::shared_meshes_dir();
   if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared meshes";
   int checked = 0;
   for (const char* name : {"cherchi_arrangements/two_spheres.stl", "cherchi_arrangements/three_cubes.stl",
@@ -185,6 +190,46 @@ TEST(IntersectionGraph, SmallSharedMeshes) {
     ++checked;
   }
   EXPECT_GT(checked, 0);
+}
+
+// Every file of the shared collection loads and goes through the classification stage
+// without an error other than InputError (meshes above a size limit that scales with
+// TRITRI_TEST_SCALE are skipped, so that sanitizer runs stay short).
+TEST(IntersectionGraph, EverySharedMeshLoadsAndClassifies) {
+  const std::filesystem::path dir = tritri_test::shared_meshes_dir();
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared meshes";
+  const char* scale_env = std::getenv("TRITRI_TEST_SCALE");
+  const double scale = scale_env ? std::atof(scale_env) : 1.0;
+  const std::size_t max_triangles = static_cast<std::size_t>(130000 * scale);
+  int classified = 0, refused = 0, skipped = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;
+    std::string ext = entry.path().extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".obj" && ext != ".off" && ext != ".stl" && ext != ".ply") continue;
+    TriangleSoup input;
+    try {
+      input = load_triangle_soup(entry.path().string());
+    } catch (const InputError&) {
+      ++refused;
+      continue;
+    }
+    if (input.triangles.size() > max_triangles) {
+      ++skipped;
+      continue;
+    }
+    PreprocessStats stats;
+    const TriangleSoup soup = preprocess(input, PreprocessOptions{}, stats);
+    const auto records =
+        classify_pairs(soup.vertices, soup.triangles, candidate_pairs(soup.vertices, soup.triangles), Classifier::Native);
+    IntersectionGraph g = build_intersection_graph(soup.vertices, soup.triangles, records);
+    propagate_coplanar(soup.vertices, soup.triangles, g);
+    EXPECT_EQ(g.intersecting_pairs, records.size()) << entry.path();
+    EXPECT_EQ(g.points.size(), soup.vertices.size() + g.new_points) << entry.path();
+    ++classified;
+  }
+  EXPECT_GT(classified, 0);
+  std::printf("classified %d, refused %d, skipped (size) %d\n", classified, refused, skipped);
 }
 
 }  // namespace
