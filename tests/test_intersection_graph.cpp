@@ -61,9 +61,14 @@ bool boxes_overlap(const std::vector<Vec3>& V, const Tri& a, const Tri& b) {
   return true;
 }
 
-// Brute force: exact coordinates of every intersection point, and the number of pairs
-// that intersect beyond shared vertices.
-std::set<Exact> reference_points(const std::vector<Vec3>& V, const std::vector<Tri>& F, std::size_t& pairs) {
+using ExactSegment = std::pair<Exact, Exact>;
+
+// Brute force: exact coordinates of every intersection point, the number of pairs that
+// intersect beyond shared vertices, and per triangle the segments (as exact endpoints)
+// that its pairs imply.
+std::set<Exact> reference_points(const std::vector<Vec3>& V, const std::vector<Tri>& F, std::size_t& pairs,
+                                 std::vector<std::set<ExactSegment>>& segments) {
+  segments.assign(F.size(), {});
   using GK = tritri::CgalKernel<CGAL::Simple_cartesian<CGAL::Gmpq>>;
   using GP = GK::Point;
   std::vector<GP> G;
@@ -79,6 +84,7 @@ std::set<Exact> reference_points(const std::vector<Vec3>& V, const std::vector<T
       for (const auto& p : r.points) only_shared &= p.type == tritri::Type::VA_ON_VB;
       if (!r.intersects() || only_shared) continue;
       ++pairs;
+      std::vector<Exact> pts;
       for (const auto& p : r.points) {
         const int i0 = p.id0, i1 = p.id1;
         auto A = [&](int k) { return ep(V[a[k % 3]]); };
@@ -95,6 +101,12 @@ std::set<Exact> reference_points(const std::vector<Vec3>& V, const std::vector<T
           case tritri::Type::EB_CROSS_TA: x = line_plane(B(i0), B(i0 + 1), A(0), A(1), A(2)); break;
         }
         out.insert(exact(x));
+        pts.push_back(exact(x));
+      }
+      for (const auto& g : r.segments) {
+        const ExactSegment seg = std::minmax(pts[g.p0], pts[g.p1]);
+        segments[i].insert(seg);
+        segments[j].insert(seg);
       }
     }
   return out;
@@ -107,10 +119,18 @@ void expect_matches_reference(const TriangleSoup& input, const std::string& what
   const auto& F = soup.triangles;
   const auto records = classify_pairs(V, F, candidate_pairs(V, F), Classifier::Native);
   IntersectionGraph g = build_intersection_graph(V, F, records);
-  propagate_coplanar(V, F, g);
 
   std::size_t reference_pairs = 0;
-  const std::set<Exact> expected = reference_points(V, F, reference_pairs);
+  std::vector<std::set<ExactSegment>> expected_segments;
+  const std::set<Exact> expected = reference_points(V, F, reference_pairs, expected_segments);
+  // Per triangle, the constraint segments (before coplanar propagation adds partners').
+  for (std::size_t t = 0; t < F.size(); ++t) {
+    std::set<ExactSegment> got_segments;
+    for (const auto& seg : g.triangle_segments[t])
+      got_segments.insert(std::minmax(exact(g.points[seg[0]]), exact(g.points[seg[1]])));
+    EXPECT_TRUE(got_segments == expected_segments[t]) << what << " triangle " << t;
+  }
+  propagate_coplanar(V, F, g);
   std::set<Exact> got;
   for (const auto& rec : records)
     for (const auto& p : rec.points) {

@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+"""Per-stage times and peak memory of `arrange --stats`, with 1 and 2 threads, as a
+Markdown table (a benchmark, not a test).
+
+usage: bench/stage_table.py [--arrange build/bin/arrange] [--threads 1 2] MESH...
+
+Each mesh runs once per thread count, each run in its own process. Columns: stage
+seconds (load, preprocess, candidate pairs, classification), total, peak RSS, and the
+2-thread speed-up of the parallel stages (candidates + classification) measured in the
+same invocation.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+
+
+def run(arrange, mesh, threads):
+    out = subprocess.run([arrange, mesh, "--stats", "--threads", str(threads)],
+                         capture_output=True, text=True)
+    if out.returncode != 0:
+        return {"error": out.stderr.strip()}
+    return json.loads(out.stdout)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--arrange", default="build/bin/arrange")
+    ap.add_argument("--threads", type=int, nargs="+", default=[1, 2])
+    ap.add_argument("meshes", nargs="+")
+    a = ap.parse_args()
+    print("| mesh | tris | cand. pairs | points | thr | load s | prep s | cand s | classify s | total s | peak MB |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for mesh in a.meshes:
+        results = {}
+        for t in a.threads:
+            r = run(a.arrange, mesh, t)
+            results[t] = r
+            name = os.path.basename(mesh)
+            if "error" in r:
+                print(f"| {name} | error: {r['error']} |")
+                continue
+            print(f"| {name} | {r['in_triangles']} | {r['candidate_pairs']} | {r['intersection_points']} | {t} | "
+                  f"{r['t_load_s']:.3f} | {r['t_preprocess_s']:.3f} | {r['t_detect_s']:.3f} | "
+                  f"{r['t_classify_s']:.3f} | {r['t_total_s']:.3f} | {r['peak_rss_mb']:.0f} |")
+        if 1 in results and 2 in results and "error" not in results[1] and "error" not in results[2]:
+            p1 = results[1]["t_detect_s"] + results[1]["t_classify_s"]
+            p2 = results[2]["t_detect_s"] + results[2]["t_classify_s"]
+            print(f"| {os.path.basename(mesh)} | | | | speed-up | | | "
+                  f"{results[1]['t_detect_s'] / max(results[2]['t_detect_s'], 1e-9):.2f}x | "
+                  f"{results[1]['t_classify_s'] / max(results[2]['t_classify_s'], 1e-9):.2f}x | "
+                  f"{p1 / max(p2, 1e-9):.2f}x (cand+classify) | |")
+    sys.stdout.flush()
+
+
+if __name__ == "__main__":
+    main()
