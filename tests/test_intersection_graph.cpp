@@ -112,12 +112,14 @@ std::set<Exact> reference_points(const std::vector<Vec3>& V, const std::vector<T
   return out;
 }
 
-void expect_matches_reference(const TriangleSoup& input, const std::string& what) {
+void expect_matches_reference(const TriangleSoup& input, const std::string& name) {
+ for (Classifier classifier : {Classifier::Native, Classifier::Tritri}) {
+  const std::string what = name + (classifier == Classifier::Native ? " (native)" : " (tritri)");
   PreprocessStats stats;
   const TriangleSoup soup = preprocess(input, PreprocessOptions{}, stats);
   const auto& V = soup.vertices;
   const auto& F = soup.triangles;
-  const auto records = classify_pairs(V, F, candidate_pairs(V, F), Classifier::Native);
+  const auto records = classify_pairs(V, F, candidate_pairs(V, F), classifier);
   IntersectionGraph g = build_intersection_graph(V, F, records);
 
   std::size_t reference_pairs = 0;
@@ -170,6 +172,7 @@ void expect_matches_reference(const TriangleSoup& input, const std::string& what
       const EP a = ep(V[g.edges[e][0]]), b = ep(V[g.edges[e][1]]);
       EXPECT_TRUE(EK::Segment_3(a, b).has_on(p) && p != a && p != b) << what << " edge " << e;
     }
+ }
 }
 
 TEST(IntersectionGraph, TwoSpheres) {

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include "arrangements/classify_native.h"
+#include "arrangements/classify_tritri.h"
 
 namespace arrangements {
 
@@ -21,6 +22,9 @@ std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const s
       switch (classifier) {
         case Classifier::Native:
           hit = classify_pair_native(V, F, pairs[i].first, pairs[i].second, record);
+          break;
+        case Classifier::Tritri:
+          hit = classify_pair_tritri(V, F, pairs[i].first, pairs[i].second, record);
           break;
       }
       if (hit) found[c].push_back(record);

@@ -34,7 +34,8 @@ pair into intersection points and segments (implicit points, never rounded).
 
 options:
   --stats                 print one JSON object with counts and stage times on stdout
-  --classifier NAME       pair classifier: native (the 2020 case analysis; default)
+  --classifier NAME       pair classifier: native (the 2020 case analysis; default) or
+                          tritri (tritri::classify through the adapter)
   --threads N             worker threads (default: all cores)
   --scale                 scale coordinates by a power of two into a safe range (exact)
   --help                  this text
@@ -105,8 +106,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "arrange: no input file (see --help)\n");
     return 2;
   }
-  if (classifier != "native") {
-    std::fprintf(stderr, "arrange: unknown classifier '%s' (known: native)\n", classifier.c_str());
+  if (classifier != "native" && classifier != "tritri") {
+    std::fprintf(stderr, "arrange: unknown classifier '%s' (known: native, tritri)\n", classifier.c_str());
     return 2;
   }
   const int workers = threads > 0 ? threads : tbb::info::default_concurrency();
@@ -130,7 +131,8 @@ int main(int argc, char** argv) {
     const double t_detect = seconds_since(t0);
 
     t0 = std::chrono::steady_clock::now();
-    const auto records = classify_pairs(soup.vertices, soup.triangles, pairs, Classifier::Native);
+    const auto records = classify_pairs(soup.vertices, soup.triangles, pairs,
+                                        classifier == "tritri" ? Classifier::Tritri : Classifier::Native);
     IntersectionGraph graph = build_intersection_graph(soup.vertices, soup.triangles, records);
     propagate_coplanar(soup.vertices, soup.triangles, graph);
     const double t_classify = seconds_since(t0);

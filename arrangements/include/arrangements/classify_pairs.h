@@ -19,7 +19,9 @@
 
 namespace arrangements {
 
-enum class Classifier { Native };
+// Native: the 2020 case analysis (classify_native.h); Tritri: tritri::classify through the
+// adapter (classify_tritri.h). Both fill the same records.
+enum class Classifier { Native, Tritri };
 
 std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
                                              const std::vector<std::pair<int, int>>& pairs,
