@@ -111,6 +111,14 @@ class ImplicitPoint {
     return *rep_->exact;
   }
 
+  // Rounding depths of the cached filtered coordinates of a point of this kind.
+  static const detail::Homogeneous<detail::RoundingDepth>& rounding_depth(Kind kind) {
+    static const auto lpi = evaluate<detail::RoundingDepth>(Kind::LPI, {});
+    static const auto tpi = evaluate<detail::RoundingDepth>(Kind::TPI, {});
+    static const detail::Homogeneous<detail::RoundingDepth> exact{0.0, 0.0, 0.0, 0.0};
+    return kind == Kind::LPI ? lpi : (kind == Kind::TPI ? tpi : exact);
+  }
+
   // Homogeneous coordinates evaluated with number type T (explicit: (x, y, z, 1)).
   template <class T>
   detail::Homogeneous<T> homogeneous() const {
@@ -153,7 +161,7 @@ class ImplicitPoint {
     }
     rep->filtered = evaluate<detail::FilteredValue>(kind, rep->in);
     // W = 0 exactly means the point is undefined: decide its sign exactly.
-    int s = rep->filtered.w.certified_sign();
+    int s = rep->filtered.w.certified_sign(rounding_depth(kind).w.depth);
     if (s == 0) s = static_cast<int>(evaluate<CGAL::Mpzf>(kind, rep->in).w.sign());
     if (s == 0) return std::nullopt;
     rep->w_sign = s;

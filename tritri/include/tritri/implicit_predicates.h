@@ -19,6 +19,7 @@
 #include <CGAL/Mpzf.h>
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 
 #include "tritri/detail/filtered_value.h"
@@ -44,14 +45,35 @@ namespace detail {
 struct FilteredCoordinates {
   const Homogeneous<FilteredValue>& operator()(const ImplicitPoint& p) const { return p.filtered(); }
 };
+struct CoordinateDepths {
+  const Homogeneous<RoundingDepth>& operator()(const ImplicitPoint& p) const {
+    return ImplicitPoint::rounding_depth(p.kind());
+  }
+};
+
+// A number identifying which operands are explicit, LPI or TPI: the shape of a
+// predicate's expression, on which its rounding depth depends.
+inline int shape_of(std::initializer_list<const ImplicitPoint*> pts) {
+  int shape = 0;
+  for (const ImplicitPoint* p : pts) shape = shape * 3 + static_cast<int>(p->kind());
+  return shape;
+}
 struct ExactCoordinates {  // only called on implicit points
   const Homogeneous<CGAL::Mpzf>& operator()(const ImplicitPoint& p) const { return p.exact_homogeneous(); }
 };
 
 // Evaluates poly(T-tag, coordinate getter) with the filter, then exactly if needed.
+// `shape` (shape_of, below 81) names the operand kinds: the expression's rounding depth
+// is computed once per call site and shape, then read from a cache.
 template <class Poly>
-int staged_sign(const Poly& poly) {
-  const int s = poly(FilteredValue{}, FilteredCoordinates{}).certified_sign();
+int staged_sign(const Poly& poly, int shape) {
+  static std::atomic<int> depth_of_shape[81] = {};  // 0: not computed yet
+  int depth = depth_of_shape[shape].load(std::memory_order_relaxed);
+  if (depth == 0) {
+    depth = poly(RoundingDepth{0.0}, CoordinateDepths{}).depth + 1;  // +1: never 0 (cache marker)
+    depth_of_shape[shape].store(depth, std::memory_order_relaxed);
+  }
+  const int s = poly(FilteredValue{}, FilteredCoordinates{}).certified_sign(depth);
   if (s != 0) {
     ++implicit_predicate_stats().filtered;
     return s;
@@ -133,6 +155,7 @@ inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, in
   }
   const int s = staged_sign([&](auto tag, const auto& get) {
     using T = decltype(tag);
+    (void)tag;
     if (q.is_explicit()) {
       const auto& h = get(p);
       const T* hc[3] = {&h.x, &h.y, &h.z};
@@ -148,7 +171,7 @@ inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, in
     const T* pc[3] = {&hp.x, &hp.y, &hp.z};
     const T* qc[3] = {&hq.x, &hq.y, &hq.z};
     return *pc[k] * hq.w - *qc[k] * hp.w;
-  });
+  }, shape_of({&p, &q}));
   return s * p.w_sign() * q.w_sign();
 }
 
@@ -174,7 +197,7 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
       using T = decltype(tag);
       return detail::det3(detail::scaled_difference3<T>(p0, ref, get), detail::scaled_difference3<T>(p1, ref, get),
                           detail::scaled_difference3<T>(p2, ref, get));
-    });
+    }, detail::shape_of({&a, &b, &c, &d}));
     return detail::to_sign((e % 2 ? -s : s) * w);
   }
   const int s = detail::staged_sign([&](auto tag, const auto& get) {
@@ -182,7 +205,7 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
     (void)tag;
     return detail::det4<T>(detail::row4<T>(get(a)), detail::row4<T>(get(b)), detail::row4<T>(get(c)),
                            detail::row4<T>(get(d)));
-  });
+  }, detail::shape_of({&a, &b, &c, &d}));
   return detail::to_sign(-s * w);
 }
 
@@ -203,7 +226,7 @@ inline Sign orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
       for (int i = 0; i < 3; ++i)
         if (i != e) rows[n++] = detail::scaled_difference<T>(*pts[i], ref, axes, get);
       return rows[0][0] * rows[1][1] - rows[0][1] * rows[1][0];
-    });
+    }, detail::shape_of({&a, &b, &c}));
     return detail::to_sign((e % 2 ? -s : s) * w);
   }
   const int s = detail::staged_sign([&](auto tag, const auto& get) {
@@ -215,7 +238,7 @@ inline Sign orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
       rows[i] = {*hc[axes[0]], *hc[axes[1]], h.w};
     }
     return detail::det3(rows[0], rows[1], rows[2]);
-  });
+  }, detail::shape_of({&a, &b, &c}));
   return detail::to_sign(s * w);
 }
 

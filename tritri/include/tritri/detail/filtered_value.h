@@ -11,8 +11,8 @@
 // (the same tree evaluated on absolute values with + for -). Each product adds 2^-1022
 // to perm so that gamma * perm also covers the absolute error (<= 2^-1075) of a product
 // that underflows, scaled by whatever multiplies it later. Overflow gives inf or NaN,
-// which never passes the test. `sign()` inflates gamma_depth by 2^-20 for the rounding
-// of perm itself, valid for depth < 2^20.
+// which never passes the test. `certified_sign()` inflates gamma_depth by 2^-20 for the
+// rounding of perm itself, valid for depth < 2^20.
 #pragma once
 
 namespace tritri::detail {
@@ -20,30 +20,49 @@ namespace tritri::detail {
 struct FilteredValue {
   double v;     // value computed in double
   double perm;  // bound on the sum of |monomials| (plus underflow floors)
-  int depth;    // roundings per monomial
 
   FilteredValue() = default;  // uninitialised, like a double
-  FilteredValue(double x) : v(x), perm(x < 0 ? -x : x), depth(0) {}  // exact leaf
-  FilteredValue(double v_, double p_, int d_) : v(v_), perm(p_), depth(d_) {}
+  FilteredValue(double x) : v(x), perm(x < 0 ? -x : x) {}  // exact leaf
+  FilteredValue(double v_, double p_) : v(v_), perm(p_) {}
 
   friend FilteredValue operator+(const FilteredValue& a, const FilteredValue& b) {
-    return {a.v + b.v, a.perm + b.perm, (a.depth > b.depth ? a.depth : b.depth) + 1};
+    return {a.v + b.v, a.perm + b.perm};
   }
   friend FilteredValue operator-(const FilteredValue& a, const FilteredValue& b) {
-    return {a.v - b.v, a.perm + b.perm, (a.depth > b.depth ? a.depth : b.depth) + 1};
+    return {a.v - b.v, a.perm + b.perm};
   }
-  friend FilteredValue operator-(const FilteredValue& a) { return {-a.v, a.perm, a.depth}; }
+  friend FilteredValue operator-(const FilteredValue& a) { return {-a.v, a.perm}; }
   friend FilteredValue operator*(const FilteredValue& a, const FilteredValue& b) {
-    return {a.v * b.v, a.perm * b.perm + 0x1p-1022, a.depth + b.depth + 1};
+    return {a.v * b.v, a.perm * b.perm + 0x1p-1022};
   }
 
-  // +1 / -1 when the exact value's sign is certain, 0 when the filter cannot decide.
-  int certified_sign() const {
+  // +1 / -1 when the exact value's sign is certain, 0 when the filter cannot decide;
+  // `depth` is the expression's rounding depth (RoundingDepth below).
+  int certified_sign(int depth) const {
     const double bound = perm * (depth * (0x1p-53 * (1.0 + 0x1p-20)));
     if (v > bound) return 1;
     if (v < -bound) return -1;
     return 0;  // undecided (also for exact zeros, inf and NaN)
   }
+};
+
+// RoundingDepth: evaluates the same expression counting only the roundings per monomial
+// (a sum: the deeper operand plus one; a product: both plus one). The depth depends only
+// on the expression's shape, never on the values, so predicates compute it once per shape
+// and cache it (the filter then needs no per-operation bookkeeping).
+struct RoundingDepth {
+  int depth;
+
+  RoundingDepth() = default;
+  RoundingDepth(double) : depth(0) {}  // exact leaf
+  explicit RoundingDepth(int d, int) : depth(d) {}
+
+  friend RoundingDepth operator+(RoundingDepth a, RoundingDepth b) {
+    return RoundingDepth((a.depth > b.depth ? a.depth : b.depth) + 1, 0);
+  }
+  friend RoundingDepth operator-(RoundingDepth a, RoundingDepth b) { return a + b; }
+  friend RoundingDepth operator-(RoundingDepth a) { return a; }
+  friend RoundingDepth operator*(RoundingDepth a, RoundingDepth b) { return RoundingDepth(a.depth + b.depth + 1, 0); }
 };
 
 }  // namespace tritri::detail
