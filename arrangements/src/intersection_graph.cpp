@@ -91,14 +91,13 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   std::vector<int> order(keys.size());
   std::iota(order.begin(), order.end(), 0);
   tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
-    if (tritri::less(lpis[a], lpis[b])) return true;
-    if (tritri::less(lpis[b], lpis[a])) return false;
-    return a < b;
+    const int c = tritri::compare_xyz(lpis[a], lpis[b]);
+    return c != 0 ? c < 0 : a < b;
   });
   std::vector<int> representative(keys.size());
   for (std::size_t i = 0; i < order.size();) {
     std::size_t j = i + 1;
-    while (j < order.size() && !tritri::less(lpis[order[i]], lpis[order[j]])) ++j;
+    while (j < order.size() && tritri::compare_xyz(lpis[order[i]], lpis[order[j]]) == 0) ++j;
     int rep = order[i];
     for (std::size_t k = i; k < j; ++k) rep = std::min(rep, order[k]);
     for (std::size_t k = i; k < j; ++k) representative[order[k]] = rep;
@@ -116,9 +115,9 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
     if (representative[i] != static_cast<int>(i)) return;
     auto it = std::lower_bound(by_position.begin(), by_position.end(), 0, [&](int vid, int) {
-      return tritri::less(g.points[vid], lpis[i]);
+      return tritri::compare_xyz(g.points[vid], lpis[i]) < 0;
     });
-    if (it != by_position.end() && tritri::equal(g.points[*it], lpis[i])) vertex_match[i] = *it;
+    if (it != by_position.end() && tritri::compare_xyz(g.points[*it], lpis[i]) == 0) vertex_match[i] = *it;
   });
   for (std::size_t i = 0; i < keys.size(); ++i) {
     if (representative[i] != static_cast<int>(i)) continue;

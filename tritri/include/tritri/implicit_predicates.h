@@ -1,7 +1,7 @@
 // tritri/implicit_predicates.h
 //
 // Exact predicates on ImplicitPoints (any mix of explicit, LPI and TPI points):
-// orient3d, orient2d (XY, YZ, ZX), equal and less (lexicographic x, y, z).
+// orient3d, orient2d (XY, YZ, ZX), equal, less and compare_xyz (lexicographic x, y, z).
 //
 // Each predicate is one polynomial in the points' homogeneous coordinates, written once
 // over a number type and evaluated in two stages: FilteredValue on the coordinates cached
@@ -242,6 +242,16 @@ inline Sign orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
   return detail::to_sign(s * w);
 }
 
+// Exact lexicographic (x, y, z) comparison: -1 if p < q, 0 if p == q, +1 if p > q.
+// One call decides what less(p, q) and less(q, p) would, at the cost of one.
+inline int compare_xyz(const ImplicitPoint& p, const ImplicitPoint& q) {
+  for (int k = 0; k < 3; ++k) {
+    const int c = detail::compare_coordinate(p, q, k);
+    if (c != 0) return c;
+  }
+  return 0;
+}
+
 // Exact coincidence.
 inline bool equal(const ImplicitPoint& p, const ImplicitPoint& q) {
   for (int k = 0; k < 3; ++k)
@@ -250,12 +260,6 @@ inline bool equal(const ImplicitPoint& p, const ImplicitPoint& q) {
 }
 
 // Exact lexicographic (x, y, z) order.
-inline bool less(const ImplicitPoint& p, const ImplicitPoint& q) {
-  for (int k = 0; k < 3; ++k) {
-    const int c = detail::compare_coordinate(p, q, k);
-    if (c != 0) return c < 0;
-  }
-  return false;
-}
+inline bool less(const ImplicitPoint& p, const ImplicitPoint& q) { return compare_xyz(p, q) < 0; }
 
 }  // namespace tritri
