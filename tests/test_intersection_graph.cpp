@@ -103,10 +103,21 @@ std::set<Exact> reference_points(const std::vector<Vec3>& V, const std::vector<T
         out.insert(exact(x));
         pts.push_back(exact(x));
       }
+      // A segment lying along a triangle's own edge is not a constraint of that triangle.
+      auto along_an_edge = [&](const Tri& t, const Exact& p, const Exact& q) {
+        auto on = [&](const EP& a, const EP& b, const Exact& x) {
+          return EK::Segment_3(a, b).has_on(EP{EK::FT(x[0]), EK::FT(x[1]), EK::FT(x[2])});
+        };
+        for (int k = 0; k < 3; ++k) {
+          const EP a = ep(V[t[k]]), b = ep(V[t[(k + 1) % 3]]);
+          if (on(a, b, p) && on(a, b, q)) return true;
+        }
+        return false;
+      };
       for (const auto& g : r.segments) {
         const ExactSegment seg = std::minmax(pts[g.p0], pts[g.p1]);
-        segments[i].insert(seg);
-        segments[j].insert(seg);
+        if (!along_an_edge(a, seg.first, seg.second)) segments[i].insert(seg);
+        if (!along_an_edge(b, seg.first, seg.second)) segments[j].insert(seg);
       }
     }
   return out;

@@ -10,7 +10,9 @@
 // Per triangle t: triangle_points[t] the points strictly inside it; edge_points[e] for
 // each of its edges e = triangle_edges[t][k] the points strictly inside that edge (edges
 // are shared between triangles); triangle_segments[t] the constraint segments (point id
-// pairs, smaller id first) that lie in it; coplanar_partners[t] the triangles that overlap
+// pairs, smaller id first) that lie in it, except those along its own edges (the edge
+// already bounds it; the segment's points are on the edge); coplanar_partners[t] the
+// triangles that overlap
 // it in a common plane. Coplanar partners also receive each other's points and segments
 // (inside the partner's closed triangle), so that both are split alike.
 // All lists are sorted and unique: the graph does not depend on thread count.
