@@ -196,15 +196,11 @@ class NativePair {
         add(0, {Location::Vertex, static_cast<std::int8_t>(v)}, loc);
     }
     // Segments: two corners of the overlap on a common closed edge of A or of B.
-    auto edges = [](const Location& l) {
-      if (l.kind == Location::Vertex) return (1 << l.id) | (1 << prev(l.id));
-      if (l.kind == Location::Edge) return 1 << l.id;
-      return 0;
-    };
     const auto& pts = out_.points;
     for (std::size_t i = 0; i < pts.size(); ++i)
       for (std::size_t j = i + 1; j < pts.size(); ++j)
-        if ((edges(pts[i].in[0]) & edges(pts[j].in[0])) || (edges(pts[i].in[1]) & edges(pts[j].in[1])))
+        if ((closed_edges(pts[i].in[0]) & closed_edges(pts[j].in[0])) ||
+            (closed_edges(pts[i].in[1]) & closed_edges(pts[j].in[1])))
           out_.segments.push_back({static_cast<std::int8_t>(i), static_cast<std::int8_t>(j)});
   }
 

@@ -55,13 +55,6 @@ PointName point_name(const std::vector<Tri>& F, const PairIntersection& p, const
   return {0, q.lpi.v[0], q.lpi.v[1], q.lpi.v[2], q.lpi.v[3], q.lpi.v[4]};
 }
 
-// The closed edges of a triangle that a location lies on, as a bit mask.
-int closed_edges(const Location& l) {
-  if (l.kind == Location::Vertex) return (1 << l.id) | (1 << (l.id + 2) % 3);
-  if (l.kind == Location::Edge) return 1 << l.id;
-  return 0;
-}
-
 tritri::ImplicitPoint make_lpi(const std::vector<Vec3>& V, const std::vector<Tri>& F, const LpiKey& key) {
   auto at = [&](int id) { return id >= 0 ? V[id] : auxiliary_point(V, F[-1 - id]); };
   return tritri::ImplicitPoint::lpi(at(key.v[0]), at(key.v[1]), at(key.v[2]), at(key.v[3]), at(key.v[4]));

@@ -26,6 +26,14 @@ struct Location {
   friend bool operator==(const Location&, const Location&) = default;
 };
 
+// The closed edges of a triangle that a location lies on, as a bit mask (a vertex lies on
+// its two edges). Two points share a closed edge iff their masks intersect.
+inline int closed_edges(const Location& l) {
+  if (l.kind == Location::Vertex) return (1 << l.id) | (1 << (l.id + 2) % 3);
+  if (l.kind == Location::Edge) return 1 << l.id;
+  return 0;
+}
+
 // An LPI by vertex ids: line (p, q), plane (r, s, t). Canonical form: p < q, r < s < t.
 struct LpiKey {
   std::array<int, 5> v{};
