@@ -60,6 +60,28 @@ tritri::ImplicitPoint make_lpi(const std::vector<Vec3>& V, const std::vector<Tri
   return tritri::ImplicitPoint::lpi(at(key.v[0]), at(key.v[1]), at(key.v[2]), at(key.v[3]), at(key.v[4]));
 }
 
+// Two planes through the line of segment s of pair p (see SegmentSupport).
+SegmentSupport segment_support(const std::vector<Tri>& F, const PairIntersection& p, const tritri::Segment& s, int a,
+                               int b) {
+  SegmentSupport sup;
+  sup.ends = {a, b};
+  sup.planes[0] = F[p.tri[0]];
+  sup.planes[1] = F[p.tri[1]];
+  if (!p.coplanar) return sup;
+  // Coplanar pairs: the segment runs along an edge of one of the triangles.
+  for (int k = 0; k < 2; ++k) {
+    const int common = closed_edges(p.points[s.p0].in[k]) & closed_edges(p.points[s.p1].in[k]);
+    for (int e = 0; e < 3; ++e)
+      if (common & (1 << e)) {
+        const Tri& t = F[p.tri[k]];
+        sup.planes[1] = {t[e], t[(e + 1) % 3], -1 - p.tri[k]};
+        return sup;
+      }
+  }
+  sup.planes[1] = sup.planes[0];  // not along an edge: triangulation reports it
+  return sup;
+}
+
 }  // namespace
 
 IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std::vector<Tri>& F,
@@ -155,6 +177,7 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
       int a = ids[s.p0], b = ids[s.p1];
       if (a == b) continue;
       if (a > b) std::swap(a, b);
+      g.segment_supports.push_back(segment_support(F, p, s, a, b));
       // A segment along a triangle's own edge is already that edge (its points are
       // recorded on the edge): it constrains only the triangles it crosses.
       for (int k = 0; k < 2; ++k)
@@ -171,6 +194,7 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   for (auto& v : g.triangle_points) sort_unique(v);
   for (auto& v : g.triangle_segments) sort_unique(v);
   for (auto& v : g.coplanar_partners) sort_unique(v);
+  sort_unique(g.segment_supports);
   std::vector<std::array<int, 2>> all_segments;
   for (const auto& v : g.triangle_segments) all_segments.insert(all_segments.end(), v.begin(), v.end());
   sort_unique(all_segments);

@@ -6,48 +6,64 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cctype>
 #include <cstring>
 #include <exception>
 #include <iostream>
 #include <string>
 #include <vector>
 
-#include "arrangements/candidate_pairs.h"
-#include "arrangements/classify_pairs.h"
+#include "arrangements/arrange.h"
+#include "arrangements/check_arrangement.h"
 #include "arrangements/input_error.h"
-#include "arrangements/intersection_graph.h"
 #include "arrangements/load_triangle_soup.h"
-#include "arrangements/preprocess.h"
-#include "arrangements/propagate_coplanar.h"
+#include "arrangements/stats_json.h"
+#include "arrangements/write_mesh.h"
 
 namespace {
 
-const char* kUsage = R"(usage: arrange INPUT... [options]
+const char* kUsage = R"(usage: arrange INPUT... [-o OUTPUT] [options]
 
-Resolves the intersections of one or more triangle soups exactly (mesh arrangement after
-Cherchi et al. 2020). Each INPUT (.obj .off .stl .ply, ASCII or binary) is labelled by its
-position: the first file has label 0, the second label 1, ...
+Computes the mesh arrangement of one or more triangle soups exactly (after Cherchi et al.
+2020): every triangle is split along its intersections with the others, so that the output
+triangles meet only at shared vertices and shared edges. Each INPUT (.obj .off .stl .ply,
+ASCII or binary) is labelled by its position: the first file has label 0, the second 1, ...
 
 Stages: load, exact preprocessing (merge duplicate vertices, remove degenerate and
 duplicate triangles), candidate pairs (bounding boxes), classification of every candidate
-pair into intersection points and segments (implicit points, never rounded).
+pair (implicit points, never rounded), exact triangulation of every intersected triangle
+(new TPIs where constraints cross; each region shared by coplanar triangles once).
 
 options:
+  -o, --output FILE       write the arrangement (.obj .off .ply by extension), atomically.
+                          Provenance: for every output triangle the input triangle it lies
+                          in (index in the input files' concatenated triangle lists, polygons
+                          fan-triangulated) and its label set: PLY face properties, or the
+                          side file FILE.provenance.csv for OBJ/OFF
+  --exact                 write exact rational coordinates (OBJ/OFF; see README) instead of
+                          coordinates rounded to the nearest double
+  --check                 verify the output exactly: every pair of output triangles with
+                          overlapping boxes meets only in shared vertices and edges
+                          (tritri on the implicit points); exit status 3 if not
   --stats                 print one JSON object with counts and stage times on stdout
-  --classifier NAME       pair classifier: native (the 2020 case analysis; default) or
-                          tritri (tritri::classify through the adapter)
+  --classifier NAME       pair classifier: tritri (tritri::classify through the adapter;
+                          default) or native (the 2020 case analysis)
   --threads N             worker threads (default: all cores)
   --scale                 scale coordinates by a power of two into a safe range (exact)
   --help                  this text
 
 JSON keys (--stats): in_vertices, in_triangles, merged_vertices, removed_degenerate,
 removed_duplicate, candidate_pairs, intersecting_pairs, intersection_points (distinct new
-points), lpi, segments (distinct constraint segments), tri_segments (summed over
-triangles), coplanar_pairs, classifier, threads, t_load_s, t_preprocess_s, t_detect_s,
-t_classify_s, t_total_s, peak_rss_mb.
+points of classification), lpi (the same), tpi (new points of triangulation), segments
+(distinct constraint segments), tri_segments (summed over triangles), coplanar_pairs,
+out_vertices (referenced), out_edges, out_triangles, euler (out_vertices - out_edges +
+out_triangles), orient3d_calls, orient2d_calls, classifier, threads, t_load_s,
+t_preprocess_s, t_detect_s, t_classify_s, t_triangulate_s, t_output_s, t_total_s,
+peak_rss_mb.
 
 exit status: 0 success, 1 bad input (unreadable, unknown format, malformed, NaN/Inf,
-out-of-range indices, empty mesh), 2 bad command line.
+out-of-range indices, empty mesh) or failed output, 2 bad command line, 3 --check found
+a violation.
 )";
 
 double peak_rss_mb() {
@@ -65,9 +81,10 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 int main(int argc, char** argv) {
   using namespace arrangements;
   std::vector<std::string> inputs;
-  bool stats = false, scale = false;
+  bool stats = false, scale = false, exact = false, check = false;
+  std::string output;
   int threads = 0;
-  std::string classifier = "native";
+  std::string classifier = "tritri";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](const char* name) -> std::string {
@@ -82,6 +99,12 @@ int main(int argc, char** argv) {
       return 0;
     } else if (a == "--stats") {
       stats = true;
+    } else if (a == "-o" || a == "--output") {
+      output = value("-o");
+    } else if (a == "--check") {
+      check = true;
+    } else if (a == "--exact") {
+      exact = true;
     } else if (a == "--scale") {
       scale = true;
     } else if (a == "--classifier") {
@@ -110,48 +133,49 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "arrange: unknown classifier '%s' (known: native, tritri)\n", classifier.c_str());
     return 2;
   }
+  if (!output.empty()) {
+    std::string ext = output.substr(output.find_last_of('.') == std::string::npos ? output.size()
+                                                                                    : output.find_last_of('.'));
+    for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext != ".obj" && ext != ".off" && ext != ".ply") {
+      std::fprintf(stderr, "arrange: unknown output format '%s' (known: .obj .off .ply)\n", output.c_str());
+      return 2;
+    }
+    if (exact && ext == ".ply") {
+      std::fprintf(stderr, "arrange: --exact needs an .obj or .off output\n");
+      return 2;
+    }
+  }
   const int workers = threads > 0 ? threads : tbb::info::default_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, workers);
 
   try {
-    const auto start = std::chrono::steady_clock::now();
-    auto t0 = start;
+    const auto t0 = std::chrono::steady_clock::now();
     const TriangleSoup input = load_triangle_soups(inputs);
     const double t_load = seconds_since(t0);
-
-    t0 = std::chrono::steady_clock::now();
-    PreprocessStats pre;
-    PreprocessOptions options;
+    ArrangeOptions options;
+    options.classifier = classifier == "tritri" ? Classifier::Tritri : Classifier::Native;
+    options.threads = workers;
     options.scale = scale;
-    const TriangleSoup soup = preprocess(input, options, pre);
-    const double t_preprocess = seconds_since(t0);
-
-    t0 = std::chrono::steady_clock::now();
-    const auto pairs = candidate_pairs(soup.vertices, soup.triangles, workers);
-    const double t_detect = seconds_since(t0);
-
-    t0 = std::chrono::steady_clock::now();
-    const auto records = classify_pairs(soup.vertices, soup.triangles, pairs,
-                                        classifier == "tritri" ? Classifier::Tritri : Classifier::Native);
-    IntersectionGraph graph = build_intersection_graph(soup.vertices, soup.triangles, records);
-    propagate_coplanar(soup.vertices, soup.triangles, graph);
-    const double t_classify = seconds_since(t0);
-
-    std::size_t tri_segments = 0;
-    for (const auto& s : graph.triangle_segments) tri_segments += s.size();
-    if (stats) {
-      std::printf(
-          "{\"in_vertices\": %zu, \"in_triangles\": %zu, \"merged_vertices\": %zu, "
-          "\"removed_degenerate\": %zu, \"removed_duplicate\": %zu, \"candidate_pairs\": %zu, "
-          "\"intersecting_pairs\": %zu, \"intersection_points\": %zu, \"lpi\": %zu, \"segments\": %zu, "
-          "\"tri_segments\": %zu, \"coplanar_pairs\": %zu, \"classifier\": \"%s\", \"threads\": %d, "
-          "\"t_load_s\": %.6f, \"t_preprocess_s\": %.6f, \"t_detect_s\": %.6f, \"t_classify_s\": %.6f, "
-          "\"t_total_s\": %.6f, \"peak_rss_mb\": %.1f}\n",
-          input.vertices.size(), input.triangles.size(), static_cast<std::size_t>(pre.merged_vertices),
-          static_cast<std::size_t>(pre.removed_degenerate), static_cast<std::size_t>(pre.removed_duplicate),
-          pairs.size(), graph.intersecting_pairs, graph.new_points, graph.new_points, graph.segments, tri_segments,
-          graph.coplanar_pairs, classifier.c_str(), workers, t_load, t_preprocess, t_detect, t_classify,
-          seconds_since(start), peak_rss_mb());
+    ArrangeResult result = arrange(input, options);
+    ArrangeStats& s = result.stats;
+    s.t_load_s = t_load;
+    if (!output.empty()) {
+      const auto tw = std::chrono::steady_clock::now();
+      WriteOptions wo;
+      wo.exact = exact;
+      write_mesh(output, result.mesh, wo);
+      s.t_output_s += seconds_since(tw);
+    }
+    s.t_total_s = seconds_since(t0);
+    s.peak_rss_mb = peak_rss_mb();
+    if (stats) std::printf("%s\n", stats_json(s).c_str());
+    if (check) {
+      const ArrangementCheck c = check_arrangement(result.mesh);
+      std::fprintf(stderr, "arrange: check: %zu overlapping output pairs, %zu violations, %zu degenerate triangles\n",
+                   c.pairs_checked, c.violations, c.degenerate_triangles);
+      for (const auto& e : c.examples) std::fprintf(stderr, "  %s\n", e.c_str());
+      if (!c.ok()) return 3;
     }
     return 0;
   } catch (const InputError& e) {

@@ -15,6 +15,14 @@
 // triangles that overlap
 // it in a common plane. Coplanar partners also receive each other's points and segments
 // (inside the partner's closed triangle), so that both are split alike.
+// segment_supports: for every distinct constraint segment (a, b), for each pair that
+// reports it (distinct records only), two planes whose
+// intersection is the segment's line, each as three vertex ids (an id below 0 stands for
+// the auxiliary point of triangle -1 - id, see pair_intersection.h); triangulation builds
+// the TPI where two constraints cross from the triangle's plane and, for each constraint,
+// one of its planes that is transverse to that triangle. For a non-coplanar pair they are
+// the two triangles' planes; for a coplanar pair, the common plane and the plane through
+// the edge the segment runs along and the auxiliary point of that edge's triangle.
 // All lists are sorted and unique: the graph does not depend on thread count.
 #pragma once
 
@@ -28,6 +36,13 @@
 
 namespace arrangements {
 
+struct SegmentSupport {
+  std::array<int, 2> ends;
+  std::array<std::array<int, 3>, 2> planes;
+  friend auto operator<=>(const SegmentSupport&, const SegmentSupport&) = default;
+  friend bool operator==(const SegmentSupport&, const SegmentSupport&) = default;
+};
+
 struct IntersectionGraph {
   int num_input_vertices = 0;
   std::vector<tritri::ImplicitPoint> points;
@@ -37,6 +52,7 @@ struct IntersectionGraph {
   std::vector<std::vector<int>> triangle_points;
   std::vector<std::vector<std::array<int, 2>>> triangle_segments;
   std::vector<std::vector<int>> coplanar_partners;
+  std::vector<SegmentSupport> segment_supports;  // sorted (by ends first), unique
 
   // Statistics.
   std::size_t intersecting_pairs = 0;

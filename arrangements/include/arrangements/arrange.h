@@ -1,0 +1,65 @@
+// arrangements/arrange.h
+//
+// arrange(input, options): the whole mesh-arrangement pipeline on a loaded soup:
+// preprocess, candidate pairs, classification (native or tritri), intersection graph,
+// coplanar propagation, triangulation, output mesh. The command-line tool `arrange`, the
+// comparison tool `tritri-compare`, the Eigen API and the Python module are layers over it.
+//
+// Inputs:  input   a TriangleSoup (e.g. load_triangle_soups); finite coordinates, valid
+//                  indices (otherwise std::invalid_argument)
+//          options classifier, threads (<= 0: all cores; the caller's TBB arena limit also
+//                  applies), scale (exact power-of-two scaling, see preprocess.h),
+//                  keep_graph (keep the intersection graph and preprocessed soup in the
+//                  result, for comparisons)
+// Output:  ArrangeResult: the output mesh, the statistics (counts and stage times), and
+//          optionally the preprocessed soup and the intersection graph.
+// Throws InputError when nothing is left to arrange (empty input, or no triangle
+// survives preprocessing) or the model cannot be scaled.
+// Exact throughout; deterministic for any number of threads.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "arrangements/classify_pairs.h"
+#include "arrangements/intersection_graph.h"
+#include "arrangements/output_mesh.h"
+#include "arrangements/triangle_soup.h"
+
+namespace arrangements {
+
+struct ArrangeOptions {
+  Classifier classifier = Classifier::Tritri;
+  int threads = 0;
+  bool scale = false;
+  bool keep_graph = false;
+};
+
+struct ArrangeStats {
+  std::size_t in_vertices = 0, in_triangles = 0;
+  std::size_t merged_vertices = 0, removed_degenerate = 0, removed_duplicate = 0;
+  std::size_t candidate_pairs = 0, intersecting_pairs = 0, coplanar_pairs = 0;
+  std::size_t intersection_points = 0;  // distinct new points of classification (LPIs)
+  std::size_t segments = 0, tri_segments = 0;
+  std::size_t tpi = 0;
+  std::size_t out_vertices = 0, out_edges = 0, out_triangles = 0;
+  long long euler = 0;
+  std::size_t orient3d_calls = 0, orient2d_calls = 0;  // in the classification stage
+  int threads = 0;
+  std::string classifier;
+  double t_load_s = 0, t_preprocess_s = 0, t_detect_s = 0, t_classify_s = 0, t_triangulate_s = 0,
+         t_output_s = 0, t_total_s = 0;
+  double peak_rss_mb = 0;
+};
+
+struct ArrangeResult {
+  OutputMesh mesh;
+  ArrangeStats stats;
+  std::optional<TriangleSoup> soup;        // preprocessed soup (keep_graph)
+  std::optional<IntersectionGraph> graph;  // its intersection graph (keep_graph)
+};
+
+ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options);
+
+}  // namespace arrangements

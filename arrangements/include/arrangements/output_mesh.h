@@ -1,0 +1,34 @@
+// arrangements/output_mesh.h
+//
+// OutputMesh: the arrangement as it is written out. Triangles meet only at shared
+// vertices and shared edges.
+//   vertices    the referenced points only (exact: explicit input vertices, LPIs, TPIs),
+//               in first-use order of `triangles`
+//   triangles   indices into `vertices`, each oriented like the input triangle it lies in
+//   source      per triangle: the index of the input triangle it lies in, in the input
+//               files' (concatenated, fan-triangulated) triangle lists
+//               (TriangleSoup::source); for a region shared by coplanar overlapping
+//               triangles, the one that the preprocessing numbered first
+//   label_set   per triangle: index into label_sets; the union of the labels of every
+//               input triangle (duplicates included) that covers the triangle
+//   label_sets  distinct sorted label sets
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <tritri/implicit_point.h>
+
+#include "arrangements/triangle_soup.h"
+
+namespace arrangements {
+
+struct OutputMesh {
+  std::vector<tritri::ImplicitPoint> vertices;
+  std::vector<Tri> triangles;
+  std::vector<std::int64_t> source;
+  std::vector<int> label_set;
+  std::vector<LabelSet> label_sets;
+};
+
+}  // namespace arrangements

@@ -1,0 +1,70 @@
+// arrangements/write_mesh.h
+//
+// Stage 7 of the pipeline: write the arrangement (OutputMesh) to a mesh file, with its
+// provenance.
+//
+// write_mesh(path, mesh, options = {})
+//   path     where to write; the extension (any case) chooses the format: .obj, .off, .ply
+//   mesh     an OutputMesh (output_mesh.h)
+//   options  exact = false: each coordinate is to_double() of the vertex (the nearest
+//            double), printed with 17 significant digits, so that reading it back as a
+//            double gives the same double (binary doubles in PLY);
+//            exact = true (OBJ and OFF only): the exact rational coordinates (below)
+//
+// Files
+//   OBJ  "v X Y Z" per vertex, then "f a b c" per triangle (1-based indices).
+//   OFF  "OFF", then "#V #F 0", then "X Y Z" per vertex, then "3 a b c" per triangle.
+//   PLY  binary_little_endian 1.0:
+//          element vertex #V: property double x, y, z
+//          element face #F:   property list uchar int vertex_indices
+//                             property int source (double when some source does not fit
+//                               in int; every int64 up to 2^53 is then exact)
+//                             property list uint uint labels (the label set)
+//        load_triangle_soup reads it back (the extra face properties are skipped).
+//   OBJ and OFF carry no provenance; it goes to the side file path + ".provenance.csv":
+//        the header line "triangle,source,labels", then per triangle t (in order) the line
+//        "t,source[t],l1 l2 ... lk" with label_sets[label_set[t]] space-separated
+//        (empty for an empty label set).
+//
+// Exact coordinates (options.exact): each coordinate X is the rational number to_exact()
+// written in lowest terms as "N/D" (N, D decimal integers, N with a '-' when negative,
+// D >= 2) or as "N" when it is an integer (D = 1). Explicit vertices are written the same
+// way (a double is the dyadic rational it holds, e.g. 0.1 is
+// 3602879701896397/36028797018963968). read_exact_mesh (read_exact_mesh.h) reads these
+// files back exactly. They are not read by load_triangle_soup (which reads doubles).
+//
+// Atomic: every file is written to a new temporary file in the same folder and renamed
+// into place once complete (and flushed to disk), the side file just before the mesh file.
+// On any failure the temporary files are removed and nothing is left at the final paths by
+// this call (an old file there is replaced only on success; if the mesh file's final rename
+// fails after its side file was placed, the side file is removed).
+//
+// Throws, before any file is created:
+//   InputError (kind unknown_format)       the extension is not .obj .off .ply
+//   InputError (kind unsupported_variant)  options.exact with .ply
+//   std::invalid_argument                  an inconsistent mesh (an index out of range, or
+//                                          per-triangle arrays of the wrong size); for PLY,
+//                                          a source beyond +-2^53 (not exact as a double)
+//   std::runtime_error                     a coordinate that overflows double (without
+//                                          options.exact), or the path is a folder
+// and std::runtime_error naming the path and the system's reason when writing fails
+// (missing or unwritable folder, disk full, ...).
+//
+// Cost: linear in the output size. to_double / to_exact evaluate each implicit vertex
+// exactly once (rational arithmetic: by far the dominant cost for LPIs and TPIs).
+#pragma once
+
+#include <string>
+
+#include "arrangements/input_error.h"
+#include "arrangements/output_mesh.h"
+
+namespace arrangements {
+
+struct WriteOptions {
+  bool exact = false;
+};
+
+void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOptions& options = {});
+
+}  // namespace arrangements

@@ -1,0 +1,116 @@
+#include "arrangements/arrange.h"
+
+#include <sys/resource.h>
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <chrono>
+
+#include "arrangements/candidate_pairs.h"
+#include "arrangements/input_error.h"
+#include "arrangements/mesh_counts.h"
+#include "arrangements/preprocess.h"
+#include "arrangements/propagate_coplanar.h"
+#include "arrangements/triangulate.h"
+
+namespace arrangements {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // kilobytes on Linux
+}
+
+// The referenced points only, renumbered in first-use order; provenance mapped back to
+// the input's triangle numbering.
+OutputMesh make_output(const TriangleSoup& soup, Triangulation&& tr) {
+  OutputMesh m;
+  std::vector<int> new_id(tr.points.size(), -1);
+  m.triangles.reserve(tr.triangles.size());
+  for (Tri t : tr.triangles) {
+    for (int& v : t) {
+      if (new_id[v] < 0) {
+        new_id[v] = static_cast<int>(m.vertices.size());
+        m.vertices.push_back(tr.points[v]);
+      }
+      v = new_id[v];
+    }
+    m.triangles.push_back(t);
+  }
+  m.source.reserve(tr.owner.size());
+  for (int o : tr.owner) m.source.push_back(soup.source[o]);
+  m.label_set = std::move(tr.label_set);
+  m.label_sets = std::move(tr.label_sets);
+  return m;
+}
+
+}  // namespace
+
+ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) {
+  const int workers = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, workers);
+  ArrangeResult r;
+  ArrangeStats& s = r.stats;
+  s.threads = workers;
+  s.classifier = options.classifier == Classifier::Tritri ? "tritri" : "native";
+  s.in_vertices = input.vertices.size();
+  s.in_triangles = input.triangles.size();
+  const auto start = std::chrono::steady_clock::now();
+
+  auto t0 = std::chrono::steady_clock::now();
+  PreprocessStats pre;
+  PreprocessOptions popt;
+  popt.scale = options.scale;
+  TriangleSoup soup = preprocess(input, popt, pre);
+  if (soup.triangles.empty())
+    throw InputError(InputErrorKind::empty_mesh, "no triangle is left after removing degenerate triangles");
+  s.merged_vertices = pre.merged_vertices;
+  s.removed_degenerate = pre.removed_degenerate;
+  s.removed_duplicate = pre.removed_duplicate;
+  s.t_preprocess_s = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  const auto pairs = candidate_pairs(soup.vertices, soup.triangles, workers);
+  s.candidate_pairs = pairs.size();
+  s.t_detect_s = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  const auto records = classify_pairs(soup.vertices, soup.triangles, pairs, options.classifier);
+  IntersectionGraph graph = build_intersection_graph(soup.vertices, soup.triangles, records);
+  propagate_coplanar(soup.vertices, soup.triangles, graph);
+  s.t_classify_s = seconds_since(t0);
+  s.intersecting_pairs = graph.intersecting_pairs;
+  s.coplanar_pairs = graph.coplanar_pairs;
+  s.intersection_points = graph.new_points;
+  s.segments = graph.segments;
+  for (const auto& v : graph.triangle_segments) s.tri_segments += v.size();
+
+  t0 = std::chrono::steady_clock::now();
+  Triangulation tr = triangulate(soup, graph);
+  s.tpi = tr.num_tpi;
+  s.t_triangulate_s = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  r.mesh = make_output(soup, std::move(tr));
+  const MeshCounts c = mesh_counts(r.mesh.triangles);
+  s.out_vertices = c.vertices;
+  s.out_edges = c.edges;
+  s.out_triangles = c.triangles;
+  s.euler = c.euler;
+  s.t_output_s = seconds_since(t0);
+
+  if (options.keep_graph) {
+    r.soup = std::move(soup);
+    r.graph = std::move(graph);
+  }
+  s.t_total_s = seconds_since(start);
+  s.peak_rss_mb = peak_rss_mb();
+  return r;
+}
+
+}  // namespace arrangements

@@ -1,0 +1,120 @@
+#include "arrangements/check_arrangement.h"
+
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Box_intersection_d/Box_with_info_d.h>
+#include <CGAL/box_intersection_d.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+
+#include <tritri/classify.h>
+#include <tritri/implicit_kernel.h>
+
+namespace arrangements {
+namespace {
+
+using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int, CGAL::Box_intersection_d::ID_EXPLICIT>;
+
+std::string describe(const OutputMesh& m, int i, int j, const std::string& what) {
+  auto tri = [&](int t) {
+    std::string s = "triangle " + std::to_string(t) + " (" + std::to_string(m.triangles[t][0]) + ", " +
+                    std::to_string(m.triangles[t][1]) + ", " + std::to_string(m.triangles[t][2]) + ")";
+    if (static_cast<std::size_t>(t) < m.source.size()) s += " of input triangle " + std::to_string(m.source[t]);
+    return s;
+  };
+  return tri(i) + " and " + tri(j) + ": " + what;
+}
+
+std::string points_of(const tritri::Result& r) {
+  std::string s = r.coplanar ? " [coplanar]" : "";
+  for (const auto& p : r.points)
+    s += " " + std::to_string(static_cast<int>(p.type)) + "(" + std::to_string(p.id0) + "," + std::to_string(p.id1) + ")";
+  return s;
+}
+
+}  // namespace
+
+ArrangementCheck check_arrangement(const OutputMesh& mesh, std::size_t max_reported) {
+  ArrangementCheck out;
+  const auto& P = mesh.vertices;
+  const auto& F = mesh.triangles;
+  // Conservative boxes: to_double is correctly rounded, so the exact coordinate lies
+  // within one ulp of it.
+  std::vector<std::array<double, 3>> lo(P.size()), hi(P.size());
+  tbb::parallel_for(std::size_t{0}, P.size(), [&](std::size_t v) {
+    const auto d = tritri::to_double(P[v]);
+    for (int k = 0; k < 3; ++k) {
+      lo[v][k] = std::nextafter(d[k], -std::numeric_limits<double>::infinity());
+      hi[v][k] = std::nextafter(d[k], std::numeric_limits<double>::infinity());
+    }
+  });
+  std::vector<Box> boxes;
+  boxes.reserve(F.size());
+  for (std::size_t t = 0; t < F.size(); ++t) {
+    double l[3], h[3];
+    for (int k = 0; k < 3; ++k) {
+      l[k] = std::min({lo[F[t][0]][k], lo[F[t][1]][k], lo[F[t][2]][k]});
+      h[k] = std::max({hi[F[t][0]][k], hi[F[t][1]][k], hi[F[t][2]][k]});
+    }
+    boxes.emplace_back(CGAL::Bbox_3(l[0], l[1], l[2], h[0], h[1], h[2]), static_cast<int>(t));
+  }
+  std::vector<std::pair<int, int>> pairs;
+  CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
+      boxes.begin(), boxes.end(),
+      [&](const Box& a, const Box& b) { pairs.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info())); },
+      CGAL::Box_intersection_d::Box_traits_d<Box>(), 10, CGAL::Box_intersection_d::CLOSED);
+  std::sort(pairs.begin(), pairs.end());
+  out.pairs_checked = pairs.size();
+
+  std::mutex m;
+  auto report = [&](std::size_t& counter, std::string msg) {
+    std::lock_guard<std::mutex> lock(m);
+    ++counter;
+    if (out.examples.size() < max_reported) out.examples.push_back(std::move(msg));
+  };
+  tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
+    const Tri& f = F[t];
+    bool degenerate = f[0] == f[1] || f[1] == f[2] || f[0] == f[2];
+    if (!degenerate) {
+      degenerate = true;
+      for (tritri::Plane pl : {tritri::Plane::XY, tritri::Plane::YZ, tritri::Plane::ZX})
+        degenerate &= tritri::orient2d(P[f[0]], P[f[1]], P[f[2]], pl) == tritri::Sign::Zero;
+    }
+    if (degenerate) report(out.degenerate_triangles, "triangle " + std::to_string(t) + " is degenerate");
+  });
+  tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
+    const auto [i, j] = pairs[k];
+    const Tri& a = F[i];
+    const Tri& b = F[j];
+    int shared = 0;
+    for (int x : a) shared += std::count(b.begin(), b.end(), x) > 0;
+    if (shared == 3) {
+      report(out.violations, describe(mesh, i, j, "same three vertices"));
+      return;
+    }
+    const tritri::Result r =
+        tritri::classify<tritri::ImplicitKernel>(P[a[0]], P[a[1]], P[a[2]], P[b[0]], P[b[1]], P[b[2]]);
+    if (r.degenerate) return;  // reported above
+    int on_shared = 0;
+    for (const auto& p : r.points) {
+      if (p.type != tritri::Type::VA_ON_VB || a[p.id0] != b[p.id1]) {
+        report(out.violations, describe(mesh, i, j, "they meet beyond their shared vertices:" + points_of(r)));
+        return;
+      }
+      ++on_shared;
+    }
+    if (on_shared != shared) {
+      report(out.violations, describe(mesh, i, j, "a shared vertex is not reported"));
+      return;
+    }
+    if (r.segments.size() != (shared == 2 ? 1u : 0u))
+      report(out.violations, describe(mesh, i, j, "unexpected intersection segments"));
+  });
+  return out;
+}
+
+}  // namespace arrangements

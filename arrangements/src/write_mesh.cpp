@@ -1,0 +1,354 @@
+// Stage 7: OutputMesh -> OBJ / OFF / PLY file and provenance (see write_mesh.h).
+#include "arrangements/write_mesh.h"
+
+#include <fcntl.h>
+#include <gmp.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+namespace arrangements {
+namespace {
+
+namespace fs = std::filesystem;
+
+enum class Format { obj, off, ply };
+
+Format format_of(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".obj") return Format::obj;
+  if (ext == ".off") return Format::off;
+  if (ext == ".ply") return Format::ply;
+  throw InputError(InputErrorKind::unknown_format,
+                   path + ": " +
+                       (ext.empty() ? std::string("no file extension") : "unknown file extension '" + ext + "'") +
+                       " (write_mesh writes .obj .off .ply, any case)");
+}
+
+void check_mesh(const std::string& path, const OutputMesh& mesh) {
+  const std::size_t nt = mesh.triangles.size();
+  if (mesh.source.size() != nt || mesh.label_set.size() != nt)
+    throw std::invalid_argument(path + ": OutputMesh has " + std::to_string(nt) + " triangles but " +
+                                std::to_string(mesh.source.size()) + " sources and " +
+                                std::to_string(mesh.label_set.size()) + " label sets");
+  for (std::size_t t = 0; t < nt; ++t) {
+    for (int i : mesh.triangles[t])
+      if (i < 0 || static_cast<std::size_t>(i) >= mesh.vertices.size())
+        throw std::invalid_argument(path + ": OutputMesh triangle " + std::to_string(t) + " has vertex index " +
+                                    std::to_string(i) + " out of range (" + std::to_string(mesh.vertices.size()) +
+                                    " vertices)");
+    const int s = mesh.label_set[t];
+    if (s < 0 || static_cast<std::size_t>(s) >= mesh.label_sets.size())
+      throw std::invalid_argument(path + ": OutputMesh triangle " + std::to_string(t) + " has label set " +
+                                  std::to_string(s) + " out of range (" + std::to_string(mesh.label_sets.size()) +
+                                  " label sets)");
+  }
+}
+
+// rename() would replace an empty folder by the file: refuse that up front.
+void refuse_folder(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw std::runtime_error(path + ": is a folder, cannot write a file there");
+}
+
+std::string system_reason(int err) { return std::generic_category().message(err); }
+
+// A file written under a temporary name in the folder of its final path and renamed into
+// place by commit(); the destructor removes the temporary file if commit() did not happen.
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::string final_path) : final_(std::move(final_path)) {
+    static std::atomic<unsigned> counter{0};
+    // O_EXCL: never reuse a file that someone else (another thread, process) is writing.
+    for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
+      tmp_ = final_ + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+      fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+      if (fd_ < 0 && errno != EEXIST) break;
+    }
+    if (fd_ < 0) {
+      const int err = errno;
+      throw std::runtime_error(final_ + ": cannot create a temporary file beside it (" + system_reason(err) + ")");
+    }
+    buffer_.reserve(kBufferSize);
+  }
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  ~AtomicFile() {
+    if (fd_ >= 0) ::close(fd_);
+    if (!committed_) ::unlink(tmp_.c_str());
+  }
+
+  void append(std::string_view bytes) {
+    buffer_.append(bytes);
+    if (buffer_.size() >= kBufferSize) flush();
+  }
+  void append(char c) {
+    buffer_.push_back(c);
+    if (buffer_.size() >= kBufferSize) flush();
+  }
+  // Writes what is buffered, flushes it to disk (so that a crash after the rename cannot
+  // leave an empty file under the final name) and closes the file.
+  void finish() {
+    flush();
+    if (::fsync(fd_) != 0 && errno != EINVAL) fail("cannot flush to disk");  // EINVAL: no fsync (pipes, ...)
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) fail("cannot close");
+  }
+  void commit() {
+    if (::rename(tmp_.c_str(), final_.c_str()) != 0) fail("cannot rename the temporary file into place");
+    committed_ = true;
+  }
+  const std::string& final_path() const { return final_; }
+
+ private:
+  static constexpr std::size_t kBufferSize = 1 << 20;
+
+  void flush() {
+    const char* p = buffer_.data();
+    std::size_t left = buffer_.size();
+    while (left > 0) {
+      const ssize_t n = ::write(fd_, p, left);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) fail("write failed");
+      p += n;
+      left -= static_cast<std::size_t>(n);
+    }
+    buffer_.clear();
+  }
+  [[noreturn]] void fail(const char* what) const {
+    const int err = errno;  // before the message's allocations can change it
+    throw std::runtime_error(final_ + ": " + what + " (" + system_reason(err) + ")");
+  }
+
+  std::string final_, tmp_;
+  int fd_ = -1;
+  std::string buffer_;
+  bool committed_ = false;
+};
+
+// ---- text formatting -------------------------------------------------------------------
+
+template <class Int>
+void append_integer(AtomicFile& f, Int v) {
+  char buf[24];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  f.append(std::string_view(buf, r.ptr - buf));
+}
+
+// 17 significant digits: enough for every double to read back as itself.
+void append_double(AtomicFile& f, double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 17);
+  f.append(std::string_view(buf, r.ptr - buf));
+}
+
+void append_mpz(AtomicFile& f, const mpz_t z, std::string& scratch) {
+  scratch.resize(mpz_sizeinbase(z, 10) + 2);  // digits (may be one too many), sign, NUL
+  mpz_get_str(scratch.data(), 10, z);
+  f.append(std::string_view(scratch.c_str()));
+}
+
+// Gmpq is always in lowest terms with a positive denominator.
+void append_rational(AtomicFile& f, const CGAL::Gmpq& q, std::string& scratch) {
+  append_mpz(f, mpq_numref(q.mpq()), scratch);
+  if (mpz_cmp_ui(mpq_denref(q.mpq()), 1) != 0) {
+    f.append('/');
+    append_mpz(f, mpq_denref(q.mpq()), scratch);
+  }
+}
+
+// The vertex coordinates as doubles, refusing those that overflow.
+std::vector<Vec3> rounded_vertices(const std::string& path, const OutputMesh& mesh) {
+  std::vector<Vec3> out;
+  out.reserve(mesh.vertices.size());
+  for (const tritri::ImplicitPoint& p : mesh.vertices) {
+    out.push_back(tritri::to_double(p));
+    for (double c : out.back())
+      if (!std::isfinite(c))
+        throw std::runtime_error(path + ": vertex " + std::to_string(out.size() - 1) +
+                                 " has a coordinate beyond the double range (write it with exact coordinates)");
+  }
+  return out;
+}
+
+// The vertex lines of OBJ ("v X Y Z") or OFF ("X Y Z").
+void append_vertices(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& rounded, bool exact,
+                     std::string_view prefix) {
+  std::string scratch;
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    f.append(prefix);
+    if (exact) {
+      const std::array<CGAL::Gmpq, 3> q = tritri::to_exact(mesh.vertices[i]);
+      for (int k = 0; k < 3; ++k) {
+        if (k) f.append(' ');
+        append_rational(f, q[k], scratch);
+      }
+    } else {
+      for (int k = 0; k < 3; ++k) {
+        if (k) f.append(' ');
+        append_double(f, rounded[i][k]);
+      }
+    }
+    f.append('\n');
+  }
+}
+
+void write_obj(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& rounded, bool exact) {
+  append_vertices(f, mesh, rounded, exact, "v ");
+  for (const Tri& t : mesh.triangles) {
+    f.append('f');
+    for (int i : t) {
+      f.append(' ');
+      append_integer(f, static_cast<long long>(i) + 1);
+    }
+    f.append('\n');
+  }
+}
+
+void write_off(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& rounded, bool exact) {
+  f.append("OFF\n");
+  append_integer(f, mesh.vertices.size());
+  f.append(' ');
+  append_integer(f, mesh.triangles.size());
+  f.append(" 0\n");
+  append_vertices(f, mesh, rounded, exact, "");
+  for (const Tri& t : mesh.triangles) {
+    f.append('3');
+    for (int i : t) {
+      f.append(' ');
+      append_integer(f, i);
+    }
+    f.append('\n');
+  }
+}
+
+void write_provenance(AtomicFile& f, const OutputMesh& mesh) {
+  f.append("triangle,source,labels\n");
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    append_integer(f, t);
+    f.append(',');
+    append_integer(f, mesh.source[t]);
+    f.append(',');
+    const LabelSet& labels = mesh.label_sets[mesh.label_set[t]];
+    for (std::size_t k = 0; k < labels.size(); ++k) {
+      if (k) f.append(' ');
+      append_integer(f, labels[k]);
+    }
+    f.append('\n');
+  }
+}
+
+// ---- binary PLY ------------------------------------------------------------------------
+
+// Little endian whatever the host's byte order.
+void append_le(AtomicFile& f, std::uint64_t bits, int bytes) {
+  char b[8];
+  for (int i = 0; i < bytes; ++i) b[i] = static_cast<char>((bits >> (8 * i)) & 0xff);
+  f.append(std::string_view(b, bytes));
+}
+void append_le_double(AtomicFile& f, double v) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  append_le(f, bits, 8);
+}
+void append_le_int32(AtomicFile& f, std::int32_t v) { append_le(f, static_cast<std::uint32_t>(v), 4); }
+
+bool sources_fit_int(const OutputMesh& mesh) {
+  for (std::int64_t s : mesh.source)
+    if (s < std::numeric_limits<std::int32_t>::min() || s > std::numeric_limits<std::int32_t>::max()) return false;
+  return true;
+}
+
+void check_ply_limits(const std::string& path, const OutputMesh& mesh) {
+  constexpr std::int64_t kExactInDouble = std::int64_t{1} << 53;
+  for (std::size_t t = 0; t < mesh.source.size(); ++t)
+    if (mesh.source[t] > kExactInDouble || mesh.source[t] < -kExactInDouble)
+      throw std::invalid_argument(path + ": triangle " + std::to_string(t) + " has source " +
+                                  std::to_string(mesh.source[t]) + ", which PLY (int or double) cannot hold exactly");
+  for (const LabelSet& s : mesh.label_sets)
+    if (s.size() > std::numeric_limits<std::uint32_t>::max())
+      throw std::invalid_argument(path + ": a label set has more than 2^32 - 1 labels");
+}
+
+void write_ply(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& rounded) {
+  const bool int_source = sources_fit_int(mesh);
+  f.append("ply\nformat binary_little_endian 1.0\n");
+  f.append("comment source: the input triangle each face lies in; labels: its label set\n");
+  f.append("element vertex ");
+  append_integer(f, mesh.vertices.size());
+  f.append("\nproperty double x\nproperty double y\nproperty double z\nelement face ");
+  append_integer(f, mesh.triangles.size());
+  f.append("\nproperty list uchar int vertex_indices\n");
+  f.append(int_source ? "property int source\n" : "property double source\n");
+  f.append("property list uint uint labels\nend_header\n");
+  for (const Vec3& v : rounded)
+    for (double c : v) append_le_double(f, c);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    f.append('\3');
+    for (int i : mesh.triangles[t]) append_le_int32(f, i);
+    if (int_source)
+      append_le_int32(f, static_cast<std::int32_t>(mesh.source[t]));
+    else
+      append_le_double(f, static_cast<double>(mesh.source[t]));  // exact: |source| <= 2^53 was checked
+    const LabelSet& labels = mesh.label_sets[mesh.label_set[t]];
+    append_le(f, labels.size(), 4);
+    for (std::uint32_t l : labels) append_le(f, l, 4);
+  }
+}
+
+}  // namespace
+
+void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOptions& options) {
+  // Everything that can be refused is refused before a file is created.
+  const Format format = format_of(path);
+  if (format == Format::ply && options.exact)
+    throw InputError(InputErrorKind::unsupported_variant,
+                     path + ": exact coordinates are written only to .obj and .off (PLY holds doubles)");
+  check_mesh(path, mesh);
+  if (format == Format::ply) check_ply_limits(path, mesh);
+  const std::string side_path = path + ".provenance.csv";
+  const bool has_side_file = format != Format::ply;
+  refuse_folder(path);
+  if (has_side_file) refuse_folder(side_path);
+  const std::vector<Vec3> rounded = options.exact ? std::vector<Vec3>{} : rounded_vertices(path, mesh);
+
+  AtomicFile file(path);
+  switch (format) {
+    case Format::obj: write_obj(file, mesh, rounded, options.exact); break;
+    case Format::off: write_off(file, mesh, rounded, options.exact); break;
+    case Format::ply: write_ply(file, mesh, rounded); break;
+  }
+  file.finish();
+  std::optional<AtomicFile> side;
+  if (has_side_file) {
+    side.emplace(side_path);
+    write_provenance(*side, mesh);
+    side->finish();
+    side->commit();
+  }
+  try {
+    file.commit();
+  } catch (...) {
+    // The mesh file was not placed: its new side file must not stay alone.
+    if (side) ::unlink(side_path.c_str());
+    throw;
+  }
+}
+
+}  // namespace arrangements
