@@ -2,7 +2,11 @@
 # Runs every test on a fresh Debian machine:
 #   1. build/       Release: all tests (ctest)
 #   2. build-asan/  RelWithDebInfo + AddressSanitizer/UBSan: all tests at TRITRI_TEST_SCALE=0.1
-#   3. install build/ to a temporary prefix and build + run tests/consumer against it
+#   3. install build/ to a temporary prefix and build + run tests/consumer and
+#      examples/cpp against it
+#   4. the Python package: pip install . into build-python/venv, binding tests, example
+#   5. the collection runner and report (pytest, with matplotlib from PyPI), and the
+#      tritri-compare tool on the generated default meshes
 # Environment: JOBS (parallel build jobs, default: number of cores).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,18 +24,18 @@ configure() {
   cmake -S "$ROOT" -B "$dir" "${gen[@]}" "$@"
 }
 
-echo "=== [1/3] Release build and tests (build/)"
+echo "=== [1/5] Release build and tests (build/)"
 configure build -DCMAKE_BUILD_TYPE=Release -DTRITRI_BUILD_TESTS=ON -DTRITRI_BUILD_BENCH=ON
 cmake --build build -j "$JOBS"
 ctest --test-dir build --output-on-failure --no-tests=error -j2
 
-echo "=== [2/3] Sanitizer build and tests (build-asan/)"
+echo "=== [2/5] Sanitizer build and tests (build-asan/)"
 configure build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRITRI_SANITIZE=ON \
   -DTRITRI_BUILD_TESTS=ON -DTRITRI_BUILD_BENCH=OFF
 cmake --build build-asan -j "$JOBS"
 TRITRI_TEST_SCALE=0.1 ctest --test-dir build-asan --output-on-failure --no-tests=error -j2
 
-echo "=== [3/3] Install and build tests/consumer against the install"
+echo "=== [3/5] Install and build tests/consumer and examples/cpp against the install"
 prefix=$(mktemp -d)
 trap 'rm -rf "$prefix"' EXIT
 cmake --install build --prefix "$prefix/install"
@@ -39,5 +43,29 @@ cmake -S tests/consumer -B "$prefix/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Releas
   -DCMAKE_PREFIX_PATH="$prefix/install"
 cmake --build "$prefix/consumer" -j "$JOBS"
 "$prefix/consumer/tritri_consumer"
+cmake -S examples/cpp -B "$prefix/example" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$prefix/install"
+cmake --build "$prefix/example" -j "$JOBS"
+"$prefix/example/arrange_example"
+
+echo "=== [4/5] Python package, binding tests and example"
+JOBS=$JOBS scripts/test_python.sh
+
+echo "=== [5/5] Collection runner and report tests, tritri-compare on the default meshes"
+VENV=$ROOT/build-python/venv
+"$VENV/bin/python" -m pip install -q matplotlib pytest
+"$VENV/bin/python" -m pytest -q -p no:cacheprovider tests/python/test_run_collection.py tests/python/test_report.py
+meshes=$(mktemp -d)
+build/bin/make_test_meshes "$meshes/default"
+"$VENV/bin/python" bench/run_collection.py "$meshes/default" --out "$meshes/results.jsonl" --tool build/bin/tritri-compare
+"$VENV/bin/python" bench/report.py "$meshes/results.jsonl" --out "$meshes/report"
+"$VENV/bin/python" - "$meshes/results.jsonl" <<'PY'
+import json, sys
+rows = [json.loads(l) for l in open(sys.argv[1])]
+bad = [r["model"] for r in rows if r.get("status") != "agree"]
+assert rows and not bad, f"classifiers disagree or failed on: {bad}"
+print(f"tritri-compare: {len(rows)} generated models, all agree")
+PY
+rm -rf "$meshes"
 
 echo "=== all tests passed"

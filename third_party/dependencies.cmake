@@ -10,6 +10,9 @@ find_package(Threads REQUIRED)
 # CGAL::TBB_support (CGAL_LINKED_WITH_TBB, needed by CGAL's Parallel_tag algorithms).
 find_package(TBB CONFIG REQUIRED)
 include(CGAL_TBB_support)
+# Eigen (header-only) for the matrix APIs: tritri/self_intersections.h, tritri/intersections.h,
+# arrangements/arrange_eigen.h and the Python module. Debian: libeigen3-dev.
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 if(TRITRI_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

@@ -80,7 +80,11 @@ ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) 
   s.t_detect_s = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  const auto records = classify_pairs(soup.vertices, soup.triangles, pairs, options.classifier);
+  tritri::PredicateCounts counts;
+  const auto records = classify_pairs(soup.vertices, soup.triangles, pairs, options.classifier,
+                                      options.count_predicates ? &counts : nullptr);
+  s.orient3d_calls = counts.orient3d;
+  s.orient2d_calls = counts.orient2d;
   IntersectionGraph graph = build_intersection_graph(soup.vertices, soup.triangles, records);
   propagate_coplanar(soup.vertices, soup.triangles, graph);
   s.t_classify_s = seconds_since(t0);

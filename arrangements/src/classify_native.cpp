@@ -2,6 +2,8 @@
 
 #include <tritri/double_predicates.h>
 
+#include "arrangements/predicate_counts.h"
+
 namespace arrangements {
 namespace {
 
@@ -11,9 +13,11 @@ int next(int i) { return i == 2 ? 0 : i + 1; }
 int prev(int i) { return i == 0 ? 2 : i - 1; }
 
 int o3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  if (auto* n = classification_counts()) ++n->orient3d;
   return tritri::to_int(tritri::orient3d(a, b, c, d));
 }
 int o2d(const Vec3& a, const Vec3& b, const Vec3& c, Plane p) {
+  if (auto* n = classification_counts()) ++n->orient2d;
   return tritri::to_int(tritri::orient2d(a, b, c, p));
 }
 

@@ -4,17 +4,23 @@
 
 #include "arrangements/classify_native.h"
 #include "arrangements/classify_tritri.h"
+#include "arrangements/predicate_counts.h"
 
 namespace arrangements {
 
 std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
                                              const std::vector<std::pair<int, int>>& pairs,
-                                             Classifier classifier) {
+                                             Classifier classifier, tritri::PredicateCounts* counts) {
   // Fixed chunks, concatenated in order: the output does not depend on scheduling.
   constexpr std::size_t chunk = 2048;
   const std::size_t chunks = (pairs.size() + chunk - 1) / chunk;
   std::vector<std::vector<PairIntersection>> found(chunks);
+  std::vector<tritri::PredicateCounts> chunk_counts(counts ? chunks : 0);
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+    // The counter is per chunk (one worker at a time), installed for this thread.
+    tritri::PredicateCounts*& installed = classification_counts();
+    tritri::PredicateCounts* const outer = installed;
+    installed = counts ? &chunk_counts[c] : nullptr;
     PairIntersection record;
     const std::size_t end = std::min(pairs.size(), (c + 1) * chunk);
     for (std::size_t i = c * chunk; i < end; ++i) {
@@ -29,7 +35,12 @@ std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const s
       }
       if (hit) found[c].push_back(record);
     }
+    installed = outer;
   });
+  for (const auto& n : chunk_counts) {
+    counts->orient3d += n.orient3d;
+    counts->orient2d += n.orient2d;
+  }
   std::vector<PairIntersection> all;
   for (auto& f : found) all.insert(all.end(), f.begin(), f.end());
   return all;

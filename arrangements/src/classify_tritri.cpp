@@ -1,7 +1,10 @@
 #include "arrangements/classify_tritri.h"
 
 #include <tritri/classify.h>
+#include <tritri/counting_kernel.h>
 #include <tritri/double_kernel.h>
+
+#include "arrangements/predicate_counts.h"
 
 namespace arrangements {
 
@@ -9,7 +12,11 @@ bool classify_pair_tritri(const std::vector<Vec3>& V, const std::vector<Tri>& F,
                           PairIntersection& out) {
   const Tri& a = F[ta];
   const Tri& b = F[tb];
-  const tritri::Result r = tritri::classify<tritri::DoubleKernel>(V[a[0]], V[a[1]], V[a[2]], V[b[0]], V[b[1]], V[b[2]]);
+  tritri::PredicateCounts* counts = classification_counts();
+  const tritri::Result r =
+      counts ? tritri::classify(tritri::CountingKernel<tritri::DoubleKernel>(*counts), V[a[0]], V[a[1]], V[a[2]], V[b[0]],
+                                V[b[1]], V[b[2]])
+             : tritri::classify<tritri::DoubleKernel>(V[a[0]], V[a[1]], V[a[2]], V[b[0]], V[b[1]], V[b[2]]);
   bool only_shared = true;
   for (const auto& p : r.points) only_shared &= p.type == tritri::Type::VA_ON_VB;
   if (!r.intersects() || only_shared) return false;
@@ -24,6 +31,7 @@ bool classify_pair_tritri(const std::vector<Vec3>& V, const std::vector<Tri>& F,
   auto next = [](int i) { return (i + 1) % 3; };
   // Does edge e of triangle t lie in the plane of triangle o?
   auto edge_in_plane = [&](const Tri& t, int e, const Tri& o) {
+    if (counts) counts->orient3d += 2;
     return tritri::orient3d(V[o[0]], V[o[1]], V[o[2]], V[t[e]]) == tritri::Sign::Zero &&
            tritri::orient3d(V[o[0]], V[o[1]], V[o[2]], V[t[next(e)]]) == tritri::Sign::Zero;
   };

@@ -67,6 +67,12 @@ class LocalTriangulation {
     else split_edge(t, edge, p);
   }
 
+  // Inserts vertex p known to lie inside the boundary edge (u, w).
+  void split_boundary_edge(int u, int w, int p) {
+    const auto [t, k] = find_edge(u, w);
+    split_edge(t, k, p);
+  }
+
   // Inserts the constraint segment (a, b) between two vertices. `crossing(cid, other)`
   // returns a new vertex at the crossing of constraint cid with constraint `other`.
   template <class Crossing>
@@ -361,12 +367,25 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
   };
   const int c0 = add(tri[0]), c1 = add(tri[1]), c2 = add(tri[2]);
   lt.start(c0, c1, c2);
-  for (int k = 0; k < 3; ++k)
-    for (int x : g.edge_points[g.triangle_edges[t][k]]) {
-      const std::size_t before = global.size();
+  // Edge points split the boundary directly (no predicate): sorted along the edge by the
+  // exact lexicographic order (monotone along a line), each one splits the sub-edge
+  // between the previous one and the edge's end.
+  for (int k = 0; k < 3; ++k) {
+    std::vector<int> on_edge = g.edge_points[g.triangle_edges[t][k]];
+    if (on_edge.empty()) continue;
+    std::sort(on_edge.begin(), on_edge.end(), [&](int x, int y) {
+      const int c = tritri::compare_xyz(g.points[x], g.points[y]);
+      return c != 0 ? c < 0 : x < y;
+    });
+    if (tritri::compare_xyz(g.points[tri[k]], g.points[tri[(k + 1) % 3]]) > 0) std::reverse(on_edge.begin(), on_edge.end());
+    int prev = local_of.at(tri[k]);
+    const int end = local_of.at(tri[(k + 1) % 3]);
+    for (int x : on_edge) {
       const int l = add(x);
-      if (global.size() > before) lt.insert_point(l);
+      lt.split_boundary_edge(prev, end, l);
+      prev = l;
     }
+  }
   for (int x : g.triangle_points[t]) {
     const std::size_t before = global.size();
     const int l = add(x);

@@ -10,7 +10,8 @@
 //          options classifier, threads (<= 0: all cores; the caller's TBB arena limit also
 //                  applies), scale (exact power-of-two scaling, see preprocess.h),
 //                  keep_graph (keep the intersection graph and preprocessed soup in the
-//                  result, for comparisons)
+//                  result, for comparisons), count_predicates (count the classification
+//                  stage's orient3d / orient2d calls; costs a thread-local load per call)
 // Output:  ArrangeResult: the output mesh, the statistics (counts and stage times), and
 //          optionally the preprocessed soup and the intersection graph.
 // Throws InputError when nothing is left to arrange (empty input, or no triangle
@@ -34,6 +35,7 @@ struct ArrangeOptions {
   int threads = 0;
   bool scale = false;
   bool keep_graph = false;
+  bool count_predicates = false;  // fill orient3d_calls / orient2d_calls (classification)
 };
 
 struct ArrangeStats {

@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include <tritri/counting_kernel.h>
+
 #include "arrangements/pair_intersection.h"
 #include "arrangements/triangle_soup.h"
 
@@ -25,6 +27,6 @@ enum class Classifier { Native, Tritri };
 
 std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
                                              const std::vector<std::pair<int, int>>& pairs,
-                                             Classifier classifier);
+                                             Classifier classifier, tritri::PredicateCounts* counts = nullptr);
 
 }  // namespace arrangements

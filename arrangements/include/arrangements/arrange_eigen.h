@@ -1,0 +1,167 @@
+// arrangements/arrange_eigen.h
+//
+// arrange(V, F, options, labels): the mesh-arrangement pipeline (arrange.h) on Eigen
+// matrices: the input triangles are cut along all their intersections into a mesh whose
+// triangles meet only at shared vertices and edges.
+//
+//   #include <arrangements/arrange_eigen.h>
+//   arrangements::EigenArrangement out = arrangements::arrange(V, F, {});
+//   // out.V, out.F: the arrangement; out.source(f): the row of F that face f lies in
+//
+// Inputs:
+//   V        #V by 3 matrix of vertex coordinates, finite (they are used exactly)
+//   F        #F by 3 matrix of triangle corners, indices into the rows of V; #F >= 1
+//   options  ArrangeOptions (arrange.h): classifier (Tritri or Native), threads (<= 0:
+//            all cores), scale; keep_graph is ignored (always off here)
+//   labels   optional #F vector of labels >= 0, one per row of F (nullptr: all 0), e.g.
+//            the index of the mesh each triangle came from
+// Output: EigenArrangement
+//   V                #V_out by 3: the output vertices rounded to the nearest double
+//                    (tritri::to_double); exact for input vertices, rounded for new
+//                    intersection points (see V_is_exact)
+//   F                #F_out by 3: triangles, indices into V / exact_vertices, each oriented
+//                    like the input triangle it lies in
+//   source           #F_out: the row of the input F that each output face lies in (for a
+//                    region where coplanar input triangles overlap, the first of them in
+//                    the pipeline's order)
+//   labels           #F_out sorted label sets: the union of the labels of every input
+//                    triangle that covers the face
+//   exact_vertices   #V_out exact output vertices (explicit input points, LPIs, TPIs);
+//                    tritri::to_exact gives their rational coordinates
+//   V_is_exact       #V_out: V.row(v) equals exact_vertices[v] exactly
+//   stats            ArrangeStats of the run (counts, stage times)
+//
+// Throws std::invalid_argument for input the pipeline cannot take: V or F without 3
+// columns, a NaN or infinite coordinate, an index out of range, labels of the wrong size
+// or negative, more rows than int indices allow. Throws arrangements::InputError
+// (input_error.h) when nothing is left to arrange (no triangles, or none survives the
+// preprocessing) or the model cannot be scaled.
+//
+// Exactness: the arrangement is exact (implicit points, exact predicates); only V is
+// rounded, so V may show self-intersections the exact mesh does not have (V_is_exact
+// tells which vertices moved). Deterministic for any number of threads.
+// Complexity: that of arrange.h (candidate pairs, classification, triangulation), plus
+// O(#V + #F) for the conversions; the rounding of new points is parallel (oneTBB).
+#pragma once
+
+#include <Eigen/Core>
+#include <tbb/parallel_for.h>
+
+#include <tritri/implicit_point.h>
+
+#include <array>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "arrangements/arrange.h"
+#include "arrangements/triangle_soup.h"
+
+namespace arrangements {
+
+struct EigenArrangement {
+  Eigen::MatrixXd V;
+  Eigen::MatrixXi F;
+  Eigen::VectorXi source;
+  std::vector<std::vector<int>> labels;
+  std::vector<tritri::ImplicitPoint> exact_vertices;
+  Eigen::Matrix<bool, Eigen::Dynamic, 1> V_is_exact;
+  ArrangeStats stats;
+};
+
+namespace detail {
+
+// The input as a TriangleSoup, with every check that keeps the pipeline from seeing
+// invalid data; source = row of F.
+inline TriangleSoup eigen_soup(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::VectorXi* labels) {
+  const std::string where = "arrangements::arrange: ";
+  if (V.size() != 0 && V.cols() != 3)
+    throw std::invalid_argument(where + "V must have 3 columns (x, y, z), got " + std::to_string(V.cols()));
+  if (F.size() != 0 && F.cols() != 3)
+    throw std::invalid_argument(where + "F must have 3 columns (one triangle per row), got " +
+                                std::to_string(F.cols()));
+  const Eigen::Index nv = V.size() == 0 ? 0 : V.rows(), nf = F.size() == 0 ? 0 : F.rows();
+  if (nv > INT_MAX || nf > INT_MAX)
+    throw std::invalid_argument(where + "more than " + std::to_string(INT_MAX) + " vertices or triangles");
+  if (labels && labels->size() != nf)
+    throw std::invalid_argument(where + "labels must have one entry per row of F (" + std::to_string(nf) +
+                                "), got " + std::to_string(labels->size()));
+
+  TriangleSoup soup;
+  soup.vertices.resize(static_cast<std::size_t>(nv));
+  for (Eigen::Index r = 0; r < nv; ++r)
+    for (int c = 0; c < 3; ++c) {
+      if (!std::isfinite(V(r, c)))
+        throw std::invalid_argument(where + "V(" + std::to_string(r) + ", " + std::to_string(c) + ") = " +
+                                    std::to_string(V(r, c)) + " is not a finite coordinate");
+      soup.vertices[r][c] = V(r, c);
+    }
+  soup.triangles.resize(static_cast<std::size_t>(nf));
+  soup.labels.resize(static_cast<std::size_t>(nf));
+  soup.source.resize(static_cast<std::size_t>(nf));
+  std::map<int, int> set_of_label;  // label -> index of {label} in soup.label_sets
+  for (Eigen::Index r = 0; r < nf; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      const int v = F(r, c);
+      if (v < 0 || v >= nv)
+        throw std::invalid_argument(where + "F(" + std::to_string(r) + ", " + std::to_string(c) + ") = " +
+                                    std::to_string(v) + " is out of range (V has " + std::to_string(nv) + " rows)");
+      soup.triangles[r][c] = v;
+    }
+    const int label = labels ? (*labels)(r) : 0;
+    if (label < 0)
+      throw std::invalid_argument(where + "labels(" + std::to_string(r) + ") = " + std::to_string(label) +
+                                  " is negative");
+    auto [it, added] = set_of_label.try_emplace(label, static_cast<int>(soup.label_sets.size()));
+    if (added) soup.label_sets.push_back({static_cast<std::uint32_t>(label)});
+    soup.labels[r] = it->second;
+    soup.source[r] = r;
+  }
+  return soup;
+}
+
+}  // namespace detail
+
+inline EigenArrangement arrange(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ArrangeOptions& options,
+                                const Eigen::VectorXi* labels = nullptr) {
+  ArrangeOptions opts = options;
+  opts.keep_graph = false;
+  ArrangeResult result = arrange(detail::eigen_soup(V, F, labels), opts);
+  OutputMesh& mesh = result.mesh;
+
+  EigenArrangement out;
+  const auto nv = static_cast<Eigen::Index>(mesh.vertices.size());
+  const auto nf = static_cast<Eigen::Index>(mesh.triangles.size());
+  out.V.resize(nv, 3);
+  out.V_is_exact.resize(nv);
+  tbb::parallel_for(Eigen::Index{0}, nv, [&](Eigen::Index v) {
+    const tritri::ImplicitPoint& p = mesh.vertices[v];
+    const std::array<double, 3> x = tritri::to_double(p);
+    bool exact = true;
+    if (!p.is_explicit()) {
+      const std::array<CGAL::Gmpq, 3> q = tritri::to_exact(p);
+      for (int c = 0; c < 3; ++c) exact = exact && std::isfinite(x[c]) && CGAL::Gmpq(x[c]) == q[c];
+    }
+    for (int c = 0; c < 3; ++c) out.V(v, c) = x[c];
+    out.V_is_exact(v) = exact;
+  });
+  out.F.resize(nf, 3);
+  out.source.resize(nf);
+  out.labels.resize(static_cast<std::size_t>(nf));
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    for (int c = 0; c < 3; ++c) out.F(f, c) = mesh.triangles[f][c];
+    out.source(f) = static_cast<int>(mesh.source[f]);
+    const LabelSet& set = mesh.label_sets[mesh.label_set[f]];
+    out.labels[f].assign(set.begin(), set.end());
+  }
+  out.exact_vertices = std::move(mesh.vertices);
+  out.stats = std::move(result.stats);
+  return out;
+}
+
+}  // namespace arrangements

@@ -1,0 +1,252 @@
+// tritri-compare: runs the arrangement pipeline with both classifiers (native and tritri)
+// on the same input and compares their results exactly. See --help.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include <tritri/implicit_predicates.h>
+
+#include "arrangements/arrange.h"
+#include "arrangements/input_error.h"
+#include "arrangements/load_triangle_soup.h"
+#include "arrangements/stats_json.h"
+
+namespace {
+
+const char* kUsage = R"(usage: tritri-compare INPUT... [options]
+
+Runs the mesh-arrangement pipeline twice on the same input, once with the native
+classifier (the 2020 case analysis) and once with tritri (tritri::classify through the
+adapter), and compares exactly:
+  - the intersection points, as sets of exact points (exact lexicographic order);
+  - per triangle, the constraint segments, as pairs of those points;
+  - the output counts: vertices, edges, triangles, Euler characteristic.
+Several INPUT files form one model (concatenated, labelled by position).
+
+options:
+  --json                  print one JSON object (below) instead of a summary
+  --threads N             worker threads (default: all cores)
+  --scale                 scale coordinates by a power of two (exact)
+  --max-differences N     list at most N differences (default 10)
+  --inject-disagreement   testing aid: drop one tritri intersection point and one of its
+                          segments before comparing (the comparison must then fail)
+  --help                  this text
+
+JSON keys: file, in_vertices, in_triangles, intersection_points, points_equal,
+segments_equal, counts_equal, euler_equal, agree, differences (list), native and tritri
+(each the `arrange --stats` object: t_classify_s, t_total_s, out_vertices, out_edges,
+out_triangles, euler, orient3d_calls, orient2d_calls, ...), ratio_classify
+(tritri / native classification time), ratio_total.
+
+exit status: 0 the classifiers agree, 1 they disagree (the first differences are listed),
+2 error (bad input or command line).
+)";
+
+using arrangements::ArrangeResult;
+using arrangements::IntersectionGraph;
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+// Canonical ids: input vertices keep theirs; new points are numbered by their rank in
+// the exact lexicographic order.
+std::vector<int> canonical_ids(const IntersectionGraph& g, std::vector<int>& sorted_new) {
+  const int nv = g.num_input_vertices;
+  sorted_new.resize(g.points.size() - nv);
+  std::iota(sorted_new.begin(), sorted_new.end(), nv);
+  std::sort(sorted_new.begin(), sorted_new.end(),
+            [&](int a, int b) { return tritri::compare_xyz(g.points[a], g.points[b]) < 0; });
+  std::vector<int> id(g.points.size());
+  std::iota(id.begin(), id.begin() + nv, 0);
+  for (std::size_t r = 0; r < sorted_new.size(); ++r) id[sorted_new[r]] = nv + static_cast<int>(r);
+  return id;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace arrangements;
+  std::vector<std::string> inputs;
+  bool json = false, scale = false, inject = false;
+  int threads = 0;
+  std::size_t max_differences = 10;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto number = [&](const char* name) -> long {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "tritri-compare: %s needs a value\n", name);
+        std::exit(2);
+      }
+      char* end = nullptr;
+      const long n = std::strtol(argv[++i], &end, 10);
+      if (*end != '\0' || n < 0 || n > 1000000) {
+        std::fprintf(stderr, "tritri-compare: %s needs a non-negative integer, got '%s'\n", name, argv[i]);
+        std::exit(2);
+      }
+      return n;
+    };
+    if (a == "--help" || a == "-h") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    } else if (a == "--json") {
+      json = true;
+    } else if (a == "--scale") {
+      scale = true;
+    } else if (a == "--inject-disagreement") {
+      inject = true;
+    } else if (a == "--threads") {
+      threads = static_cast<int>(number("--threads"));
+    } else if (a == "--max-differences") {
+      max_differences = static_cast<std::size_t>(number("--max-differences"));
+    } else if (a.size() > 1 && a[0] == '-') {
+      std::fprintf(stderr, "tritri-compare: unknown option '%s' (see --help)\n", a.c_str());
+      return 2;
+    } else {
+      inputs.push_back(a);
+    }
+  }
+  if (inputs.empty()) {
+    std::fprintf(stderr, "tritri-compare: no input file (see --help)\n");
+    return 2;
+  }
+  std::string file;
+  for (const auto& in : inputs) file += (file.empty() ? "" : " + ") + in;
+
+  try {
+    const auto t0 = std::chrono::steady_clock::now();
+    const TriangleSoup input = load_triangle_soups(inputs);
+    const double t_load = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ArrangeOptions options;
+    options.threads = threads;
+    options.scale = scale;
+    options.keep_graph = true;
+    options.count_predicates = true;
+    options.classifier = Classifier::Native;
+    ArrangeResult native = arrange(input, options);
+    options.classifier = Classifier::Tritri;
+    ArrangeResult tritri_run = arrange(input, options);
+    native.stats.t_load_s = tritri_run.stats.t_load_s = t_load;
+
+    IntersectionGraph& gn = *native.graph;
+    IntersectionGraph& gt = *tritri_run.graph;
+    if (inject && gt.points.size() > static_cast<std::size_t>(gt.num_input_vertices)) {
+      gt.points.pop_back();
+      const int dropped = static_cast<int>(gt.points.size());
+      for (auto& segs : gt.triangle_segments)
+        std::erase_if(segs, [&](const std::array<int, 2>& s) { return s[0] == dropped || s[1] == dropped; });
+    }
+
+    std::vector<std::string> differences;
+    auto differ = [&](std::string what) {
+      if (differences.size() < max_differences) differences.push_back(std::move(what));
+    };
+    if (native.soup->vertices != tritri_run.soup->vertices || native.soup->triangles != tritri_run.soup->triangles)
+      throw std::logic_error("the two runs preprocessed the input differently");
+
+    // Points, as exact sets.
+    std::vector<int> sorted_n, sorted_t;
+    const std::vector<int> id_n = canonical_ids(gn, sorted_n);
+    const std::vector<int> id_t = canonical_ids(gt, sorted_t);
+    bool points_equal = sorted_n.size() == sorted_t.size();
+    if (!points_equal)
+      differ("intersection points: native " + std::to_string(sorted_n.size()) + ", tritri " +
+             std::to_string(sorted_t.size()));
+    for (std::size_t r = 0, e = std::min(sorted_n.size(), sorted_t.size()); r < e; ++r)
+      if (tritri::compare_xyz(gn.points[sorted_n[r]], gt.points[sorted_t[r]]) != 0) {
+        if (points_equal) {
+          const auto p = tritri::to_double(gn.points[sorted_n[r]]);
+          const auto q = tritri::to_double(gt.points[sorted_t[r]]);
+          char buf[256];
+          std::snprintf(buf, sizeof buf,
+                        "intersection point %zu in exact order: native (%.17g, %.17g, %.17g), tritri (%.17g, %.17g, "
+                        "%.17g)",
+                        r, p[0], p[1], p[2], q[0], q[1], q[2]);
+          differ(buf);
+        }
+        points_equal = false;
+      }
+
+    // Segments per triangle, on canonical ids (meaningful when the points are equal).
+    bool segments_equal = points_equal;
+    std::size_t segment_differences = 0;
+    for (std::size_t t = 0; t < gn.triangle_segments.size(); ++t) {
+      auto canon = [](const std::vector<std::array<int, 2>>& segs, const std::vector<int>& id) {
+        std::vector<std::array<int, 2>> out;
+        for (const auto& s : segs) out.push_back({std::min(id[s[0]], id[s[1]]), std::max(id[s[0]], id[s[1]])});
+        std::sort(out.begin(), out.end());
+        return out;
+      };
+      if (canon(gn.triangle_segments[t], id_n) != canon(gt.triangle_segments[t], id_t)) {
+        segments_equal = false;
+        if (segment_differences++ == 0 || points_equal)
+          differ("constraint segments of triangle " + std::to_string(t) + ": native " +
+                 std::to_string(gn.triangle_segments[t].size()) + ", tritri " +
+                 std::to_string(gt.triangle_segments[t].size()));
+      }
+    }
+
+    const ArrangeStats& sn = native.stats;
+    const ArrangeStats& st = tritri_run.stats;
+    const bool counts_equal =
+        sn.out_vertices == st.out_vertices && sn.out_edges == st.out_edges && sn.out_triangles == st.out_triangles;
+    const bool euler_equal = sn.euler == st.euler;
+    if (!counts_equal)
+      differ("output counts (V, E, F): native (" + std::to_string(sn.out_vertices) + ", " +
+             std::to_string(sn.out_edges) + ", " + std::to_string(sn.out_triangles) + "), tritri (" +
+             std::to_string(st.out_vertices) + ", " + std::to_string(st.out_edges) + ", " +
+             std::to_string(st.out_triangles) + ")");
+    const bool agree = points_equal && segments_equal && counts_equal && euler_equal;
+    auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
+
+    if (json) {
+      std::string diffs = "[";
+      for (std::size_t i = 0; i < differences.size(); ++i) diffs += (i ? ", " : "") + json_string(differences[i]);
+      diffs += "]";
+      std::printf(
+          "{\"file\": %s, \"in_vertices\": %zu, \"in_triangles\": %zu, \"intersection_points\": %zu, "
+          "\"points_equal\": %s, \"segments_equal\": %s, \"counts_equal\": %s, \"euler_equal\": %s, \"agree\": %s, "
+          "\"differences\": %s, \"ratio_classify\": %.6f, \"ratio_total\": %.6f, \"native\": %s, \"tritri\": %s}\n",
+          json_string(file).c_str(), sn.in_vertices, sn.in_triangles, st.intersection_points,
+          points_equal ? "true" : "false", segments_equal ? "true" : "false", counts_equal ? "true" : "false",
+          euler_equal ? "true" : "false", agree ? "true" : "false", diffs.c_str(),
+          ratio(st.t_classify_s, sn.t_classify_s), ratio(st.t_total_s, sn.t_total_s), stats_json(sn).c_str(),
+          stats_json(st).c_str());
+    } else {
+      std::printf("%s: %s\n", file.c_str(), agree ? "native and tritri agree" : "native and tritri DISAGREE");
+      std::printf("  intersection points %zu, output V %zu E %zu F %zu, Euler %lld\n", st.intersection_points,
+                  st.out_vertices, st.out_edges, st.out_triangles, st.euler);
+      std::printf("  classification: native %.4f s (%zu orient3d, %zu orient2d), tritri %.4f s (%zu orient3d, %zu "
+                  "orient2d), ratio %.3f\n",
+                  sn.t_classify_s, sn.orient3d_calls, sn.orient2d_calls, st.t_classify_s, st.orient3d_calls,
+                  st.orient2d_calls, ratio(st.t_classify_s, sn.t_classify_s));
+      std::printf("  total: native %.4f s, tritri %.4f s\n", sn.t_total_s, st.t_total_s);
+      for (const auto& d : differences) std::printf("  difference: %s\n", d.c_str());
+    }
+    return agree ? 0 : 1;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "tritri-compare: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tritri-compare: error: %s\n", e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,265 @@
+// tritri._tritri: the Python extension behind the `tritri` package (python/tritri/__init__.py,
+// which normalises the arguments to C-contiguous float64 / int64 numpy arrays and documents
+// the functions). Every C++ computation runs with the GIL released; every refused input
+// raises ValueError (std::invalid_argument, std::domain_error and arrangements::InputError
+// are translated), so bad input never takes the interpreter down.
+#include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
+#include <nanobind/stl/optional.h>
+#include <nanobind/stl/string.h>
+
+#include <Eigen/Core>
+
+#include <arrangements/arrange_eigen.h>
+#include <arrangements/input_error.h>
+#include <tritri/classify.h>
+#include <tritri/double_kernel.h>
+#include <tritri/intersections.h>
+#include <tritri/result.h>
+#include <tritri/self_intersections.h>
+
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace nb = nanobind;
+
+namespace {
+
+using Coords = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+using Indices = nb::ndarray<const std::int64_t, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+using Labels = nb::ndarray<const std::int64_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+using RowMajorXd = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using RowMajorXl = Eigen::Matrix<std::int64_t, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+Eigen::Map<const RowMajorXd> as_eigen(const Coords& a) {
+  return {a.data(), static_cast<Eigen::Index>(a.shape(0)), static_cast<Eigen::Index>(a.shape(1))};
+}
+Eigen::Map<const RowMajorXl> as_eigen(const Indices& a) {
+  return {a.data(), static_cast<Eigen::Index>(a.shape(0)), static_cast<Eigen::Index>(a.shape(1))};
+}
+
+// A numpy array that owns `data`.
+template <class T>
+nb::object numpy_array(std::vector<T>&& data, std::initializer_list<std::size_t> shape) {
+  auto* owned = new std::vector<T>(std::move(data));
+  nb::capsule owner(owned, [](void* p) noexcept { delete static_cast<std::vector<T>*>(p); });
+  return nb::cast(nb::ndarray<nb::numpy, T>(owned->data(), shape, owner));
+}
+
+tritri::DoubleKernel::Point triangle_corner(const Coords& t, std::size_t row, const char* name) {
+  tritri::DoubleKernel::Point p;
+  for (std::size_t c = 0; c < 3; ++c) {
+    p[c] = t.data()[3 * row + c];
+    if (!std::isfinite(p[c]))
+      throw std::invalid_argument(std::string("tritri.classify: ") + name + "[" + std::to_string(row) + ", " +
+                                  std::to_string(c) + "] is not a finite coordinate");
+  }
+  return p;
+}
+
+tritri::Result classify(const Coords& a, const Coords& b) {
+  for (const auto& [t, name] : {std::pair<const Coords&, const char*>{a, "a"}, {b, "b"}})
+    if (t.shape(0) != 3 || t.shape(1) != 3)
+      throw std::invalid_argument(std::string("tritri.classify: ") + name +
+                                  " must be a 3 x 3 array (one vertex per row), got " + std::to_string(t.shape(0)) +
+                                  " x " + std::to_string(t.shape(1)));
+  const auto a0 = triangle_corner(a, 0, "a"), a1 = triangle_corner(a, 1, "a"), a2 = triangle_corner(a, 2, "a");
+  const auto b0 = triangle_corner(b, 0, "b"), b1 = triangle_corner(b, 1, "b"), b2 = triangle_corner(b, 2, "b");
+  return tritri::classify<tritri::DoubleKernel>(a0, a1, a2, b0, b1, b2);
+}
+
+// (pairs as a k x 2 int64 array, results as a list of Result).
+nb::tuple pairs_and_results(std::vector<tritri::IntersectingPair>&& found) {
+  std::vector<std::int64_t> ij(2 * found.size());
+  nb::list results;
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    ij[2 * k] = found[k].i;
+    ij[2 * k + 1] = found[k].j;
+    results.append(nb::cast(found[k].result));
+  }
+  const std::size_t rows = found.size();
+  return nb::make_tuple(numpy_array(std::move(ij), {rows, 2}), results);
+}
+
+nb::tuple self_intersections(const Coords& V, const Indices& F) {
+  std::vector<tritri::IntersectingPair> found;
+  {
+    nb::gil_scoped_release release;
+    found = tritri::self_intersections(as_eigen(V), as_eigen(F));
+  }
+  return pairs_and_results(std::move(found));
+}
+
+nb::tuple intersections(const Coords& V1, const Indices& F1, const Coords& V2, const Indices& F2) {
+  std::vector<tritri::IntersectingPair> found;
+  {
+    nb::gil_scoped_release release;
+    found = tritri::intersections(as_eigen(V1), as_eigen(F1), as_eigen(V2), as_eigen(F2));
+  }
+  return pairs_and_results(std::move(found));
+}
+
+arrangements::Classifier classifier_named(const std::string& name) {
+  if (name == "tritri") return arrangements::Classifier::Tritri;
+  if (name == "native") return arrangements::Classifier::Native;
+  throw std::invalid_argument("tritri.arrange: unknown classifier '" + name + "' (use 'tritri' or 'native')");
+}
+
+nb::dict stats_dict(const arrangements::ArrangeStats& s) {
+  nb::dict d;
+  d["in_vertices"] = s.in_vertices;
+  d["in_triangles"] = s.in_triangles;
+  d["merged_vertices"] = s.merged_vertices;
+  d["removed_degenerate"] = s.removed_degenerate;
+  d["removed_duplicate"] = s.removed_duplicate;
+  d["candidate_pairs"] = s.candidate_pairs;
+  d["intersecting_pairs"] = s.intersecting_pairs;
+  d["coplanar_pairs"] = s.coplanar_pairs;
+  d["intersection_points"] = s.intersection_points;
+  d["segments"] = s.segments;
+  d["tri_segments"] = s.tri_segments;
+  d["tpi"] = s.tpi;
+  d["out_vertices"] = s.out_vertices;
+  d["out_edges"] = s.out_edges;
+  d["out_triangles"] = s.out_triangles;
+  d["euler"] = s.euler;
+  d["orient3d_calls"] = s.orient3d_calls;
+  d["orient2d_calls"] = s.orient2d_calls;
+  d["threads"] = s.threads;
+  d["classifier"] = s.classifier;
+  d["t_load_s"] = s.t_load_s;
+  d["t_preprocess_s"] = s.t_preprocess_s;
+  d["t_detect_s"] = s.t_detect_s;
+  d["t_classify_s"] = s.t_classify_s;
+  d["t_triangulate_s"] = s.t_triangulate_s;
+  d["t_output_s"] = s.t_output_s;
+  d["t_total_s"] = s.t_total_s;
+  d["peak_rss_mb"] = s.peak_rss_mb;
+  return d;
+}
+
+nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels, const std::string& classifier,
+                 int threads) {
+  arrangements::ArrangeOptions options;
+  options.classifier = classifier_named(classifier);
+  options.threads = threads;
+  arrangements::EigenArrangement out;
+  {
+    nb::gil_scoped_release release;
+    const std::string where = "tritri.arrange: ";
+    if (V.shape(0) > 0 && V.shape(1) != 3)
+      throw std::invalid_argument(where + "V must have 3 columns (x, y, z), got " + std::to_string(V.shape(1)));
+    if (F.shape(0) > 0 && F.shape(1) != 3)
+      throw std::invalid_argument(where + "F must have 3 columns (one triangle per row), got " +
+                                  std::to_string(F.shape(1)));
+    const Eigen::MatrixXd Ve = V.shape(0) > 0 ? Eigen::MatrixXd(as_eigen(V)) : Eigen::MatrixXd(0, 3);
+    // int64 -> int: an index outside [0, #V) is refused here, before it could wrap.
+    const auto Fl = as_eigen(F);
+    const auto nv = static_cast<std::int64_t>(Ve.rows());
+    Eigen::MatrixXi Fe(F.shape(0) > 0 ? Fl.rows() : 0, 3);
+    for (Eigen::Index r = 0; r < Fe.rows(); ++r)
+      for (int c = 0; c < 3; ++c) {
+        const std::int64_t v = Fl(r, c);
+        if (v < 0 || v >= nv)
+          throw std::invalid_argument(where + "F[" + std::to_string(r) + ", " + std::to_string(c) + "] = " +
+                                      std::to_string(v) + " is out of range (V has " + std::to_string(nv) + " rows)");
+        Fe(r, c) = static_cast<int>(v);
+      }
+    std::optional<Eigen::VectorXi> Le;
+    if (labels) {
+      if (labels->shape(0) != static_cast<std::size_t>(Fe.rows()))
+        throw std::invalid_argument(where + "labels must have one entry per row of F (" + std::to_string(Fe.rows()) +
+                                    "), got " + std::to_string(labels->shape(0)));
+      Le.emplace(Fe.rows());
+      for (Eigen::Index r = 0; r < Fe.rows(); ++r) {
+        const std::int64_t l = labels->data()[r];
+        if (l < 0 || l > INT_MAX)
+          throw std::invalid_argument(where + "labels[" + std::to_string(r) + "] = " + std::to_string(l) +
+                                      " is not in [0, " + std::to_string(INT_MAX) + "]");
+        (*Le)(r) = static_cast<int>(l);
+      }
+    }
+    out = arrangements::arrange(Ve, Fe, options, Le ? &*Le : nullptr);
+  }
+
+  const auto nv = static_cast<std::size_t>(out.V.rows()), nf = static_cast<std::size_t>(out.F.rows());
+  std::vector<double> v(3 * nv);
+  std::vector<std::uint8_t> exact(nv);
+  for (std::size_t i = 0; i < nv; ++i) {
+    for (int c = 0; c < 3; ++c) v[3 * i + c] = out.V(i, c);
+    exact[i] = out.V_is_exact(i) ? 1 : 0;
+  }
+  std::vector<std::int64_t> f(3 * nf), source(nf);
+  nb::list labels_out;
+  for (std::size_t i = 0; i < nf; ++i) {
+    for (int c = 0; c < 3; ++c) f[3 * i + c] = out.F(i, c);
+    source[i] = out.source(i);
+    nb::list set;
+    for (int l : out.labels[i]) set.append(l);
+    labels_out.append(nb::tuple(set));
+  }
+  nb::dict d;
+  d["V"] = numpy_array(std::move(v), {nv, 3});
+  d["F"] = numpy_array(std::move(f), {nf, 3});
+  d["source"] = numpy_array(std::move(source), {nf});
+  d["labels"] = labels_out;
+  d["V_is_exact"] = numpy_array(std::move(exact), {nv}).attr("astype")("bool");
+  d["stats"] = stats_dict(out.stats);
+  return d;
+}
+
+}  // namespace
+
+NB_MODULE(_tritri, m) {
+  m.doc() = "Exact triangle-triangle intersection classification and mesh arrangements (see tritri/__init__.py).";
+
+  nb::register_exception_translator([](const std::exception_ptr& p, void*) {
+    try {
+      std::rethrow_exception(p);
+    } catch (const arrangements::InputError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+
+  nb::class_<tritri::Result>(m, "Result",
+                             "The exact classification of the intersection of two triangles A and B.")
+      .def_prop_ro(
+          "points",
+          [](const tritri::Result& r) {
+            nb::list l;
+            for (const auto& p : r.points) l.append(nb::make_tuple(tritri::to_string(p.type), int(p.id0), int(p.id1)));
+            return l;
+          },
+          "Every corner of A ∩ B as (type, id0, id1), type one of VA_ON_VB, VA_ON_EB, VB_ON_EA, VA_ON_TB, "
+          "VB_ON_TA, EA_CROSS_EB, EA_CROSS_TB, EB_CROSS_TA; sorted by (type, id0, id1).")
+      .def_prop_ro(
+          "segments",
+          [](const tritri::Result& r) {
+            nb::list l;
+            for (const auto& s : r.segments) l.append(nb::make_tuple(int(s.p0), int(s.p1)));
+            return l;
+          },
+          "Segments of the intersection as pairs of indices into points.")
+      .def_ro("coplanar", &tritri::Result::coplanar, "The triangles lie in one plane (and were classified).")
+      .def_ro("degenerate", &tritri::Result::degenerate,
+              "A triangle is degenerate and the pair was not classified (points is empty).")
+      .def_prop_ro("intersects", &tritri::Result::intersects, "At least one point.")
+      .def("__eq__", [](const tritri::Result& a, const tritri::Result& b) { return a == b; }, nb::is_operator())
+      .def("__repr__", [](const tritri::Result& r) {
+        std::ostringstream s;
+        s << r;
+        return s.str();
+      });
+
+  m.def("classify", &classify, nb::arg("a"), nb::arg("b"));
+  m.def("self_intersections", &self_intersections, nb::arg("V"), nb::arg("F"));
+  m.def("intersections", &intersections, nb::arg("V1"), nb::arg("F1"), nb::arg("V2"), nb::arg("F2"));
+  m.def("arrange", &arrange, nb::arg("V"), nb::arg("F"), nb::arg("labels").none(), nb::arg("classifier"),
+        nb::arg("threads"));
+}

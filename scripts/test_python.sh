@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Builds and installs the Python package with `pip install .` (scikit-build-core and
+# nanobind come from PyPI) into a virtual environment, then runs the binding tests
+# (tests/python/test_bindings.py) and the Python example.
+# Environment: JOBS (parallel compile jobs, default: number of cores), PYTHON (interpreter
+# for the venv, default python3), TRITRI_PY_VENV (venv, default build-python/venv).
+# The CMake build directory build-python/wheel is kept, so a rerun recompiles only what
+# changed. Needs the Debian packages of scripts/setup_debian.sh.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ROOT=$PWD
+JOBS=${JOBS:-$(nproc)}
+PYTHON=${PYTHON:-python3}
+VENV=${TRITRI_PY_VENV:-$ROOT/build-python/venv}
+
+mkdir -p "$ROOT/build-python"
+[[ -x $VENV/bin/python ]] || "$PYTHON" -m venv "$VENV"
+"$VENV/bin/python" -m pip install -q numpy pytest
+
+echo "=== pip install . (build dir build-python/wheel)"
+start=$SECONDS
+CMAKE_BUILD_PARALLEL_LEVEL=$JOBS "$VENV/bin/python" -m pip install -q "$ROOT" \
+  --config-settings=build-dir="$ROOT/build-python/wheel"
+echo "pip install took $((SECONDS - start)) s"
+
+# Run outside the checkout so that `import tritri` can only mean the installed package.
+cd "$ROOT/build-python"
+export PYTHONDONTWRITEBYTECODE=1
+echo "=== pytest tests/python/test_bindings.py"
+"$VENV/bin/python" -m pytest -q -p no:cacheprovider "$ROOT/tests/python/test_bindings.py"
+echo "=== examples/python/arrange_example.py"
+"$VENV/bin/python" "$ROOT/examples/python/arrange_example.py" "$ROOT/build-python/two_cubes.off"
+echo "=== python tests passed"
