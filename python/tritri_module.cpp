@@ -12,6 +12,7 @@
 
 #include <arrangements/arrange_eigen.h>
 #include <arrangements/input_error.h>
+#include <arrangements/load_triangle_soup.h>
 #include <tritri/classify.h>
 #include <tritri/double_kernel.h>
 #include <tritri/intersections.h>
@@ -214,6 +215,27 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
   return d;
 }
 
+// A mesh file as plain arrays (the pipeline's loader: OBJ, OFF, STL, PLY; polygons
+// fan-triangulated; vertices unmerged). Bad files raise ValueError (InputError).
+nb::dict load_mesh(const std::string& path) {
+  arrangements::TriangleSoup soup;
+  {
+    nb::gil_scoped_release release;
+    soup = arrangements::load_triangle_soup(path);
+  }
+  const std::size_t nv = soup.vertices.size(), nf = soup.triangles.size();
+  std::vector<double> v(3 * nv);
+  std::vector<std::int64_t> f(3 * nf);
+  for (std::size_t i = 0; i < nv; ++i)
+    for (int c = 0; c < 3; ++c) v[3 * i + c] = soup.vertices[i][c];
+  for (std::size_t i = 0; i < nf; ++i)
+    for (int c = 0; c < 3; ++c) f[3 * i + c] = soup.triangles[i][c];
+  nb::dict d;
+  d["V"] = numpy_array(std::move(v), {nv, 3});
+  d["F"] = numpy_array(std::move(f), {nf, 3});
+  return d;
+}
+
 }  // namespace
 
 NB_MODULE(_tritri, m) {
@@ -260,6 +282,7 @@ NB_MODULE(_tritri, m) {
   m.def("classify", &classify, nb::arg("a"), nb::arg("b"));
   m.def("self_intersections", &self_intersections, nb::arg("V"), nb::arg("F"));
   m.def("intersections", &intersections, nb::arg("V1"), nb::arg("F1"), nb::arg("V2"), nb::arg("F2"));
+  m.def("load_mesh", &load_mesh, nb::arg("path"));
   m.def("arrange", &arrange, nb::arg("V"), nb::arg("F"), nb::arg("labels").none(), nb::arg("classifier"),
         nb::arg("threads"));
 }

@@ -26,9 +26,10 @@ from ._tritri import Result
 from ._tritri import arrange as _arrange
 from ._tritri import classify as _classify
 from ._tritri import intersections as _intersections
+from ._tritri import load_mesh as _load_mesh
 from ._tritri import self_intersections as _self_intersections
 
-__all__ = ["Result", "classify", "self_intersections", "intersections", "arrange"]
+__all__ = ["Result", "classify", "self_intersections", "intersections", "arrange", "load_mesh"]
 __version__ = "0.1.0"
 
 
@@ -161,3 +162,14 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0):
             raise ValueError(f"tritri.arrange: labels has a value out of range ({la.max()})")
         la = _np.ascontiguousarray(la, dtype=_np.int64)
     return _arrange(_vertices(V, "V", f), Fa, la, classifier, threads)
+
+
+def load_mesh(path):
+    """Reads a mesh file with the pipeline's loader (the same one `arrange` uses).
+
+    path: an .obj, .off, .stl or .ply file (ASCII or binary). Polygons are fan-triangulated
+    from their first corner; vertices are not merged (arrange merges them exactly).
+    Returns a dict with V (n x 3 float64) and F (m x 3 int64). A missing, unreadable or
+    malformed file, NaN/Inf coordinates or out-of-range indices raise ValueError.
+    """
+    return _load_mesh(str(path))

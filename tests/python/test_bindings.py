@@ -345,3 +345,17 @@ def test_bad_input_messages_name_the_argument_and_entry():
         tritri.arrange(V3, F1, classifier="fast")
     with pytest.raises(ValueError, match=r"must be an n x 3 array"):
         tritri.self_intersections(np.zeros((4, 2)), F1)
+
+
+def test_load_mesh_reads_what_was_written_and_refuses_bad_files(tmp_path):
+    # A quad written by hand: fan-triangulated from its first corner.
+    p = tmp_path / "quad.off"
+    p.write_text("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
+    m = tritri.load_mesh(p)
+    np.testing.assert_array_equal(m["V"], [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]])
+    np.testing.assert_array_equal(m["F"], [[0, 1, 2], [0, 2, 3]])
+    bad = tmp_path / "bad.off"
+    bad.write_text("OFF\n3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n")
+    for path in (bad, tmp_path / "missing.obj", tmp_path / "x.xyz"):
+        with pytest.raises(ValueError):
+            tritri.load_mesh(path)
