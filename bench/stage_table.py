@@ -5,9 +5,9 @@ Markdown table (a benchmark, not a test).
 usage: bench/stage_table.py [--arrange build/bin/arrange] [--threads 1 2] MESH...
 
 Each mesh runs once per thread count, each run in its own process. Columns: stage
-seconds (load, preprocess, candidate pairs, classification), total, peak RSS, and the
-2-thread speed-up of the parallel stages (candidates + classification) measured in the
-same invocation.
+seconds (load, preprocess, candidate pairs, classification, triangulation, output), total,
+peak RSS, and the 2-thread speed-up per stage and of the whole run, measured in the same
+invocation.
 """
 import argparse
 import json
@@ -30,8 +30,9 @@ def main():
     ap.add_argument("--threads", type=int, nargs="+", default=[1, 2])
     ap.add_argument("meshes", nargs="+")
     a = ap.parse_args()
-    print("| mesh | tris | cand. pairs | points | thr | load s | prep s | cand s | classify s | total s | peak MB |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    print("| mesh | tris | cand. pairs | LPI + TPI | out tris | thr | load s | prep s | cand s | classify s | "
+          "triangulate s | output s | total s | peak MB |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for mesh in a.meshes:
         results = {}
         for t in a.threads:
@@ -41,16 +42,16 @@ def main():
             if "error" in r:
                 print(f"| {name} | error: {r['error']} |")
                 continue
-            print(f"| {name} | {r['in_triangles']} | {r['candidate_pairs']} | {r['intersection_points']} | {t} | "
+            print(f"| {name} | {r['in_triangles']} | {r['candidate_pairs']} | "
+                  f"{r['intersection_points']} + {r['tpi']} | {r['out_triangles']} | {t} | "
                   f"{r['t_load_s']:.3f} | {r['t_preprocess_s']:.3f} | {r['t_detect_s']:.3f} | "
-                  f"{r['t_classify_s']:.3f} | {r['t_total_s']:.3f} | {r['peak_rss_mb']:.0f} |")
+                  f"{r['t_classify_s']:.3f} | {r['t_triangulate_s']:.3f} | {r['t_output_s']:.3f} | "
+                  f"{r['t_total_s']:.3f} | {r['peak_rss_mb']:.0f} |")
         if 1 in results and 2 in results and "error" not in results[1] and "error" not in results[2]:
-            p1 = results[1]["t_detect_s"] + results[1]["t_classify_s"]
-            p2 = results[2]["t_detect_s"] + results[2]["t_classify_s"]
-            print(f"| {os.path.basename(mesh)} | | | | speed-up | | | "
-                  f"{results[1]['t_detect_s'] / max(results[2]['t_detect_s'], 1e-9):.2f}x | "
-                  f"{results[1]['t_classify_s'] / max(results[2]['t_classify_s'], 1e-9):.2f}x | "
-                  f"{p1 / max(p2, 1e-9):.2f}x (cand+classify) | |")
+            def up(k):
+                return f"{results[1][k] / max(results[2][k], 1e-9):.2f}x"
+            print(f"| {os.path.basename(mesh)} | | | | | speed-up | | | {up('t_detect_s')} | "
+                  f"{up('t_classify_s')} | {up('t_triangulate_s')} | {up('t_output_s')} | {up('t_total_s')} | |")
     sys.stdout.flush()
 
 

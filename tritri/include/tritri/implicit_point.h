@@ -38,6 +38,7 @@
 
 #include "tritri/detail/filtered_value.h"
 #include "tritri/detail/homogeneous.h"
+#include "tritri/detail/offset.h"
 
 namespace tritri {
 
@@ -117,6 +118,20 @@ class ImplicitPoint {
     static const auto tpi = evaluate<detail::RoundingDepth>(Kind::TPI, {});
     static const detail::Homogeneous<detail::RoundingDepth> exact{0.0, 0.0, 0.0, 0.0};
     return kind == Kind::LPI ? lpi : (kind == Kind::TPI ? tpi : exact);
+  }
+
+  // (W (p - o), W) for an explicit origin o, evaluated with T from differences of the
+  // defining points and o (detail/offset.h); explicit points: (p - o, 1). For T =
+  // RoundingDepth the result depends only on the kind.
+  template <class T>
+  detail::Homogeneous<T> offset_homogeneous(const Coords& o) const {
+    if (!rep_) {
+      const auto d = detail::difference_leaves<T>(xyz_, o);
+      return {d[0], d[1], d[2], T(1.0)};
+    }
+    const auto& in = rep_->in;
+    if (rep_->kind == Kind::LPI) return detail::lpi_offset<T>(in[0], in[1], in[2], in[3], in[4], o);
+    return detail::tpi_offset<T>(in, o);
   }
 
   // Homogeneous coordinates evaluated with number type T (explicit: (x, y, z, 1)).

@@ -82,6 +82,30 @@ int staged_sign(const Poly& poly, int shape) {
   return static_cast<int>(poly(CGAL::Mpzf{}, ExactCoordinates{}).sign());
 }
 
+// First filter stage: poly(tag, off) evaluated on offset coordinates (off(p) = (W (p - o),
+// W) for the predicate's origin o), FilteredValue only; 0 if undecided. The rounding depth
+// is computed once per call site and shape, like staged_sign's.
+template <class Poly>
+int offset_filter_sign(const Poly& poly, int shape) {
+  static std::atomic<int> depth_of_shape[81] = {};
+  int depth = depth_of_shape[shape].load(std::memory_order_relaxed);
+  if (depth == 0) {
+    depth = poly(RoundingDepth{0.0}).depth + 1;
+    depth_of_shape[shape].store(depth, std::memory_order_relaxed);
+  }
+  const int s = poly(FilteredValue{}).certified_sign(depth);
+  if (s != 0) ++implicit_predicate_stats().filtered;
+  return s;
+}
+
+// The origin for offset coordinates: an explicit operand if there is one, else the first
+// defining point of the first operand (near it, for points of an arrangement).
+inline const ImplicitPoint::Coords& offset_origin(std::initializer_list<const ImplicitPoint*> pts) {
+  for (const ImplicitPoint* p : pts)
+    if (p->is_explicit()) return p->approx();
+  return (*pts.begin())->input(0);
+}
+
 // Coordinates of point p relative to explicit point c, scaled by W_p: W_p (p - c),
 // restricted to the axes in `axes`.
 template <class T, class Get, std::size_t N>
@@ -153,6 +177,16 @@ inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, in
     const double a = p.approx()[k], b = q.approx()[k];
     return a < b ? -1 : (a > b ? 1 : 0);
   }
+  const auto& o = q.is_explicit() ? q.approx() : offset_origin({&p});
+  const int f = offset_filter_sign([&](auto tag) {
+    using T = decltype(tag);
+    const auto hp = p.offset_homogeneous<T>(o);
+    const auto hq = q.offset_homogeneous<T>(o);
+    const T* pc[3] = {&hp.x, &hp.y, &hp.z};
+    const T* qc[3] = {&hq.x, &hq.y, &hq.z};
+    return *pc[k] * hq.w - *qc[k] * hp.w;
+  }, shape_of({&p, &q}));
+  if (f != 0) return f * p.w_sign() * q.w_sign();
   const int s = staged_sign([&](auto tag, const auto& get) {
     using T = decltype(tag);
     (void)tag;
@@ -186,6 +220,19 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
   const ImplicitPoint* pts[4] = {&a, &b, &c, &d};
   const int e = detail::first_explicit({&a, &b, &c, &d});
   const int w = a.w_sign() * b.w_sign() * c.w_sign() * d.w_sign();
+  {
+    const auto& o = detail::offset_origin({&a, &b, &c, &d});
+    const int f = detail::offset_filter_sign([&](auto tag) {
+      using T = decltype(tag);
+      std::array<T, 4> rows[4];
+      for (int i = 0; i < 4; ++i) {
+        const auto h = pts[i]->offset_homogeneous<T>(o);
+        rows[i] = {h.x, h.y, h.z, h.w};
+      }
+      return detail::det4<T>(rows[0], rows[1], rows[2], rows[3]);
+    }, detail::shape_of({&a, &b, &c, &d}));
+    if (f != 0) return detail::to_sign(-f * w);
+  }
   if (e >= 0) {
     // orient3d = (-1)^e det3(rows W_i (p_i - p_e), i != e, in order) * prod sign(W_i).
     const auto& ref = pts[e]->approx();
@@ -217,6 +264,20 @@ inline Sign orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
   const ImplicitPoint* pts[3] = {&a, &b, &c};
   const int e = detail::first_explicit({&a, &b, &c});
   const int w = a.w_sign() * b.w_sign() * c.w_sign();
+  {
+    const auto& o = detail::offset_origin({&a, &b, &c});
+    const int f = detail::offset_filter_sign([&](auto tag) {
+      using T = decltype(tag);
+      std::array<T, 3> rows[3];
+      for (int i = 0; i < 3; ++i) {
+        const auto h = pts[i]->offset_homogeneous<T>(o);
+        const T* hc[3] = {&h.x, &h.y, &h.z};
+        rows[i] = {*hc[axes[0]], *hc[axes[1]], h.w};
+      }
+      return detail::det3(rows[0], rows[1], rows[2]);
+    }, detail::shape_of({&a, &b, &c}));
+    if (f != 0) return detail::to_sign(f * w);
+  }
   if (e >= 0) {
     const auto& ref = pts[e]->approx();
     const int s = detail::staged_sign([&](auto tag, const auto& get) {
