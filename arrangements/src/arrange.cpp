@@ -4,7 +4,10 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include <tbb/parallel_for.h>
+
 #include <chrono>
+#include <cmath>
 
 #include "arrangements/candidate_pairs.h"
 #include "arrangements/input_error.h"
@@ -26,9 +29,21 @@ double peak_rss_mb() {
   return usage.ru_maxrss / 1024.0;  // kilobytes on Linux
 }
 
-// The referenced points only, renumbered in first-use order; provenance mapped back to
-// the input's triangle numbering.
-OutputMesh make_output(const TriangleSoup& soup, Triangulation&& tr) {
+// The point p of a model scaled by 2^k, in the unscaled model's frame: its defining
+// points scaled by 2^-k (exact: preprocessing only scales when that is exact both ways).
+tritri::ImplicitPoint unscaled(const tritri::ImplicitPoint& p, int k) {
+  auto back = [k](const Vec3& c) { return Vec3{std::ldexp(c[0], -k), std::ldexp(c[1], -k), std::ldexp(c[2], -k)}; };
+  using Kind = tritri::ImplicitPoint::Kind;
+  if (p.kind() == Kind::Explicit) return tritri::ImplicitPoint::explicit_point(back(p.approx()));
+  Vec3 in[9];
+  for (int i = 0; i < p.input_count(); ++i) in[i] = back(p.input(i));
+  if (p.kind() == Kind::LPI) return tritri::ImplicitPoint::lpi(in[0], in[1], in[2], in[3], in[4]);
+  return tritri::ImplicitPoint::tpi(in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8]);
+}
+
+// The referenced points only, renumbered in first-use order (in the input's frame);
+// provenance mapped back to the input's triangle numbering.
+OutputMesh make_output(const TriangleSoup& soup, Triangulation&& tr, int scale_exponent) {
   OutputMesh m;
   std::vector<int> new_id(tr.points.size(), -1);
   m.triangles.reserve(tr.triangles.size());
@@ -42,6 +57,9 @@ OutputMesh make_output(const TriangleSoup& soup, Triangulation&& tr) {
     }
     m.triangles.push_back(t);
   }
+  if (scale_exponent != 0)
+    tbb::parallel_for(std::size_t{0}, m.vertices.size(),
+                      [&](std::size_t i) { m.vertices[i] = unscaled(m.vertices[i], scale_exponent); });
   m.source.reserve(tr.owner.size());
   for (int o : tr.owner) m.source.push_back(soup.source[o]);
   m.label_set = std::move(tr.label_set);
@@ -100,7 +118,7 @@ ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) 
   s.t_triangulate_s = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  r.mesh = make_output(soup, std::move(tr));
+  r.mesh = make_output(soup, std::move(tr), pre.scale_exponent);
   const MeshCounts c = mesh_counts(r.mesh.triangles);
   s.out_vertices = c.vertices;
   s.out_edges = c.edges;

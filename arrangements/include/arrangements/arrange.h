@@ -12,7 +12,8 @@
 //                  keep_graph (keep the intersection graph and preprocessed soup in the
 //                  result, for comparisons), count_predicates (count the classification
 //                  stage's orient3d / orient2d calls; costs a thread-local load per call)
-// Output:  ArrangeResult: the output mesh, the statistics (counts and stage times), and
+// Output:  ArrangeResult: the output mesh (in the input's coordinates, also with scale:
+//          its points are rebuilt from the unscaled defining points, exactly), the statistics (counts and stage times), and
 //          optionally the preprocessed soup and the intersection graph.
 // Throws InputError when nothing is left to arrange (empty input, or no triangle
 // survives preprocessing) or the model cannot be scaled.
