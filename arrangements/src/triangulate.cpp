@@ -39,17 +39,26 @@ inline int prev3(int k) { return k == 0 ? 2 : k - 1; }
 class LocalTriangulation {
  public:
   std::vector<ImplicitPoint> pts;   // local vertices
+  std::vector<tritri::OffsetPoint> off;  // their offset coordinates (origin: a corner)
   std::vector<LocalTriangle> tris;
   std::vector<int> vtri;            // a triangle incident to each vertex
 
-  LocalTriangulation(tritri::Plane plane, int sign) : plane_(plane), sign_(sign) {}
+  LocalTriangulation(tritri::Plane plane, int sign, const Vec3& origin)
+      : plane_(plane), sign_(sign), origin_(origin) {
+    pts.reserve(64);
+  }
 
   int orient(int a, int b, int c) const {
-    return sign_ * tritri::to_int(tritri::orient2d(pts[a], pts[b], pts[c], plane_));
+    return sign_ * tritri::to_int(tritri::orient2d(off[a], off[b], off[c], plane_));
   }
 
   int add_vertex(const ImplicitPoint& p) {
+    // pts may reallocate: the offset points keep indices, and are re-pointed below.
+    const ImplicitPoint* before = pts.data();
     pts.push_back(p);
+    if (pts.data() != before)
+      for (std::size_t i = 0; i < off.size(); ++i) off[i].point = &pts[i];
+    off.push_back(tritri::offset_point(pts.back(), origin_));
     vtri.push_back(-1);
     return static_cast<int>(pts.size()) - 1;
   }
@@ -124,6 +133,7 @@ class LocalTriangulation {
  private:
   tritri::Plane plane_;
   int sign_;
+  Vec3 origin_;
   int last_ = 0;
   std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;
 
@@ -352,7 +362,7 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
   const std::vector<Vec3>& V = soup.vertices;
   const Tri& tri = soup.triangles[t];
   const auto [plane, sign] = projection(V, tri);
-  LocalTriangulation lt(plane, sign);
+  LocalTriangulation lt(plane, sign, V[tri[0]]);
 
   // Local vertices: corners, edge points, interior points (graph ids in `global`).
   std::vector<int> global;

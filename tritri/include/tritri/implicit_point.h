@@ -100,6 +100,11 @@ class ImplicitPoint {
 
   // Sign of W (+1 / -1) for implicit points, +1 for explicit ones.
   int w_sign() const noexcept { return rep_ ? rep_->w_sign : 1; }
+  // Filtered homogeneous coordinates: the cached ones, or (x, y, z, 1) for explicit points.
+  detail::Homogeneous<detail::FilteredValue> homogeneous_filtered() const noexcept {
+    if (!rep_) return {xyz_[0], xyz_[1], xyz_[2], 1.0};
+    return rep_->filtered;
+  }
   // Cached filtered homogeneous coordinates (implicit points only).
   const detail::Homogeneous<detail::FilteredValue>& filtered() const noexcept { return rep_->filtered; }
 

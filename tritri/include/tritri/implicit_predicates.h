@@ -21,6 +21,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <type_traits>
 
 #include "tritri/detail/filtered_value.h"
 #include "tritri/detail/homogeneous.h"
@@ -62,17 +63,23 @@ struct ExactCoordinates {  // only called on implicit points
   const Homogeneous<CGAL::Mpzf>& operator()(const ImplicitPoint& p) const { return p.exact_homogeneous(); }
 };
 
-// Evaluates poly(T-tag, coordinate getter) with the filter, then exactly if needed.
+// Evaluates the sign of poly(T-tag, coordinate getter): `middle` (another filter) first,
+// then the filter on the cached (absolute) coordinates, then exactly if needed.
 // `shape` (shape_of, below 81) names the operand kinds: the expression's rounding depth
 // is computed once per call site and shape, then read from a cache.
-template <class Poly>
-int staged_sign(const Poly& poly, int shape) {
+template <class Poly, class Middle>
+int staged_sign(const Poly& poly, int shape, const Middle& middle) {
   static std::atomic<int> depth_of_shape[81] = {};  // 0: not computed yet
   int depth = depth_of_shape[shape].load(std::memory_order_relaxed);
   if (depth == 0) {
     depth = poly(RoundingDepth{0.0}, CoordinateDepths{}).depth + 1;  // +1: never 0 (cache marker)
     depth_of_shape[shape].store(depth, std::memory_order_relaxed);
   }
+  // First `middle` (the offset filter: decides near points, which the cached absolute
+  // coordinates rarely do; measured faster first), in poly's sign convention, 0 if
+  // undecided; then the filter on the cached coordinates.
+  const int m = middle();
+  if (m != 0) return m;
   const int s = poly(FilteredValue{}, FilteredCoordinates{}).certified_sign(depth);
   if (s != 0) {
     ++implicit_predicate_stats().filtered;
@@ -80,6 +87,11 @@ int staged_sign(const Poly& poly, int shape) {
   }
   ++implicit_predicate_stats().exact;
   return static_cast<int>(poly(CGAL::Mpzf{}, ExactCoordinates{}).sign());
+}
+
+template <class Poly>
+int staged_sign(const Poly& poly, int shape) {
+  return staged_sign(poly, shape, [] { return 0; });
 }
 
 // First filter stage: poly(tag, off) evaluated on offset coordinates (off(p) = (W (p - o),
@@ -177,16 +189,17 @@ inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, in
     const double a = p.approx()[k], b = q.approx()[k];
     return a < b ? -1 : (a > b ? 1 : 0);
   }
-  const auto& o = q.is_explicit() ? q.approx() : offset_origin({&p});
-  const int f = offset_filter_sign([&](auto tag) {
-    using T = decltype(tag);
-    const auto hp = p.offset_homogeneous<T>(o);
-    const auto hq = q.offset_homogeneous<T>(o);
-    const T* pc[3] = {&hp.x, &hp.y, &hp.z};
-    const T* qc[3] = {&hq.x, &hq.y, &hq.z};
-    return *pc[k] * hq.w - *qc[k] * hp.w;
-  }, shape_of({&p, &q}));
-  if (f != 0) return f * p.w_sign() * q.w_sign();
+  auto offset_stage = [&] {
+    const auto& o = q.is_explicit() ? q.approx() : offset_origin({&p});
+    return offset_filter_sign([&](auto tag) {
+      using T = decltype(tag);
+      const auto hp = p.offset_homogeneous<T>(o);
+      const auto hq = q.offset_homogeneous<T>(o);
+      const T* pc[3] = {&hp.x, &hp.y, &hp.z};
+      const T* qc[3] = {&hq.x, &hq.y, &hq.z};
+      return *pc[k] * hq.w - *qc[k] * hp.w;
+    }, shape_of({&p, &q}));
+  };
   const int s = staged_sign([&](auto tag, const auto& get) {
     using T = decltype(tag);
     (void)tag;
@@ -205,7 +218,7 @@ inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, in
     const T* pc[3] = {&hp.x, &hp.y, &hp.z};
     const T* qc[3] = {&hq.x, &hq.y, &hq.z};
     return *pc[k] * hq.w - *qc[k] * hp.w;
-  }, shape_of({&p, &q}));
+  }, shape_of({&p, &q}), offset_stage);
   return s * p.w_sign() * q.w_sign();
 }
 
@@ -220,9 +233,10 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
   const ImplicitPoint* pts[4] = {&a, &b, &c, &d};
   const int e = detail::first_explicit({&a, &b, &c, &d});
   const int w = a.w_sign() * b.w_sign() * c.w_sign() * d.w_sign();
-  {
+  // Offset filter stage, as the sign of det4 of the rows (W (p - o), W).
+  auto offset_det4 = [&] {
     const auto& o = detail::offset_origin({&a, &b, &c, &d});
-    const int f = detail::offset_filter_sign([&](auto tag) {
+    return detail::offset_filter_sign([&](auto tag) {
       using T = decltype(tag);
       std::array<T, 4> rows[4];
       for (int i = 0; i < 4; ++i) {
@@ -231,8 +245,7 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
       }
       return detail::det4<T>(rows[0], rows[1], rows[2], rows[3]);
     }, detail::shape_of({&a, &b, &c, &d}));
-    if (f != 0) return detail::to_sign(-f * w);
-  }
+  };
   if (e >= 0) {
     // orient3d = (-1)^e det3(rows W_i (p_i - p_e), i != e, in order) * prod sign(W_i).
     const auto& ref = pts[e]->approx();
@@ -244,7 +257,7 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
       using T = decltype(tag);
       return detail::det3(detail::scaled_difference3<T>(p0, ref, get), detail::scaled_difference3<T>(p1, ref, get),
                           detail::scaled_difference3<T>(p2, ref, get));
-    }, detail::shape_of({&a, &b, &c, &d}));
+    }, detail::shape_of({&a, &b, &c, &d}), [&] { return e % 2 ? offset_det4() : -offset_det4(); });
     return detail::to_sign((e % 2 ? -s : s) * w);
   }
   const int s = detail::staged_sign([&](auto tag, const auto& get) {
@@ -252,7 +265,7 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
     (void)tag;
     return detail::det4<T>(detail::row4<T>(get(a)), detail::row4<T>(get(b)), detail::row4<T>(get(c)),
                            detail::row4<T>(get(d)));
-  }, detail::shape_of({&a, &b, &c, &d}));
+  }, detail::shape_of({&a, &b, &c, &d}), offset_det4);
   return detail::to_sign(-s * w);
 }
 
@@ -264,9 +277,10 @@ inline Sign orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
   const ImplicitPoint* pts[3] = {&a, &b, &c};
   const int e = detail::first_explicit({&a, &b, &c});
   const int w = a.w_sign() * b.w_sign() * c.w_sign();
-  {
+  // Offset filter stage, as the sign of det3 of the rows (W (p - o) projected, W).
+  auto offset_det3 = [&] {
     const auto& o = detail::offset_origin({&a, &b, &c});
-    const int f = detail::offset_filter_sign([&](auto tag) {
+    return detail::offset_filter_sign([&](auto tag) {
       using T = decltype(tag);
       std::array<T, 3> rows[3];
       for (int i = 0; i < 3; ++i) {
@@ -276,8 +290,7 @@ inline Sign orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
       }
       return detail::det3(rows[0], rows[1], rows[2]);
     }, detail::shape_of({&a, &b, &c}));
-    if (f != 0) return detail::to_sign(f * w);
-  }
+  };
   if (e >= 0) {
     const auto& ref = pts[e]->approx();
     const int s = detail::staged_sign([&](auto tag, const auto& get) {
@@ -287,7 +300,7 @@ inline Sign orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
       for (int i = 0; i < 3; ++i)
         if (i != e) rows[n++] = detail::scaled_difference<T>(*pts[i], ref, axes, get);
       return rows[0][0] * rows[1][1] - rows[0][1] * rows[1][0];
-    }, detail::shape_of({&a, &b, &c}));
+    }, detail::shape_of({&a, &b, &c}), [&] { return e % 2 ? -offset_det3() : offset_det3(); });
     return detail::to_sign((e % 2 ? -s : s) * w);
   }
   const int s = detail::staged_sign([&](auto tag, const auto& get) {
@@ -299,15 +312,118 @@ inline Sign orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
       rows[i] = {*hc[axes[0]], *hc[axes[1]], h.w};
     }
     return detail::det3(rows[0], rows[1], rows[2]);
-  }, detail::shape_of({&a, &b, &c}));
+  }, detail::shape_of({&a, &b, &c}), offset_det3);
   return detail::to_sign(s * w);
+}
+
+// Points with cached offset coordinates, for many predicates on points near one explicit
+// origin (e.g. every point of one triangle of an arrangement): the first filter stage
+// reads the cache instead of rebuilding W (p - o) per call; undecided calls fall back to
+// the plain predicates (same results, exact).
+//   OffsetPoint q = offset_point(p, o);   // o: an explicit point near p
+// Precondition of the predicates: all operands were made with the same origin; the
+// ImplicitPoint must outlive the OffsetPoint.
+struct OffsetPoint {
+  const ImplicitPoint* point = nullptr;
+  detail::Homogeneous<detail::FilteredValue> h{};
+};
+
+inline OffsetPoint offset_point(const ImplicitPoint& p, const ImplicitPoint::Coords& origin) {
+  return {&p, p.offset_homogeneous<detail::FilteredValue>(origin)};
+}
+
+// orient2d(*a.point, *b.point, *c.point, plane). Exact.
+inline Sign orient2d(const OffsetPoint& a, const OffsetPoint& b, const OffsetPoint& c, Plane plane) {
+  const ImplicitPoint& pa = *a.point;
+  const ImplicitPoint& pb = *b.point;
+  const ImplicitPoint& pc = *c.point;
+  const auto axes = detail::plane_axes(plane);
+  const int shape = detail::shape_of({&pa, &pb, &pc});
+  static std::atomic<int> depth_of_shape[27] = {};
+  int depth = depth_of_shape[shape].load(std::memory_order_relaxed);
+  auto rows_det = [&](const auto& ha, const auto& hb, const auto& hc) {
+    using T = std::decay_t<decltype(ha.w)>;
+    std::array<T, 3> rows[3];
+    const detail::Homogeneous<T>* h[3] = {&ha, &hb, &hc};
+    for (int i = 0; i < 3; ++i) {
+      const T* hcoord[3] = {&h[i]->x, &h[i]->y, &h[i]->z};
+      rows[i] = {*hcoord[axes[0]], *hcoord[axes[1]], h[i]->w};
+    }
+    return detail::det3(rows[0], rows[1], rows[2]);
+  };
+  if (depth == 0) {
+    const ImplicitPoint::Coords o{0, 0, 0};  // the depth depends on the kinds only
+    depth = rows_det(pa.offset_homogeneous<detail::RoundingDepth>(o), pb.offset_homogeneous<detail::RoundingDepth>(o),
+                     pc.offset_homogeneous<detail::RoundingDepth>(o))
+                .depth +
+            1;
+    depth_of_shape[shape].store(depth, std::memory_order_relaxed);
+  }
+  const int f = rows_det(a.h, b.h, c.h).certified_sign(depth);
+  if (f != 0) {
+    ++implicit_predicate_stats().filtered;
+    return detail::to_sign(f * pa.w_sign() * pb.w_sign() * pc.w_sign());
+  }
+  return orient2d(pa, pb, pc, plane);
 }
 
 // Exact lexicographic (x, y, z) comparison: -1 if p < q, 0 if p == q, +1 if p > q.
 // One call decides what less(p, q) and less(q, p) would, at the cost of one.
 inline int compare_xyz(const ImplicitPoint& p, const ImplicitPoint& q) {
+  if (p.is_explicit() && q.is_explicit()) {
+    const auto &a = p.approx(), &b = q.approx();
+    return a < b ? -1 : (b < a ? 1 : 0);
+  }
+  // Per axis: the filter on the cached absolute coordinates (cheap; decides points that
+  // are far apart, most comparisons of a sort), then on offset coordinates (computed once
+  // for all axes: they decide near points), then compare_coordinate (exact).
+  const int w = p.w_sign() * q.w_sign();
+  const int shape = detail::shape_of({&p, &q});
+  static std::atomic<int> depth_of_shape[2][9] = {};
+  auto depth = [&](int which, auto&& compute) {
+    int d = depth_of_shape[which][shape].load(std::memory_order_relaxed);
+    if (d == 0) {
+      d = compute() + 1;
+      depth_of_shape[which][shape].store(d, std::memory_order_relaxed);
+    }
+    return d;
+  };
+  using detail::FilteredValue;
+  using detail::RoundingDepth;
+  const auto abs_p = p.homogeneous_filtered(), abs_q = q.homogeneous_filtered();
+  const int abs_depth = depth(0, [&] {
+    const auto& dp = ImplicitPoint::rounding_depth(p.kind());
+    const auto& dq = ImplicitPoint::rounding_depth(q.kind());
+    return (dp.x * dq.w - dq.x * dp.w).depth;
+  });
+  const ImplicitPoint::Coords* origin = nullptr;
+  detail::Homogeneous<FilteredValue> off_p{}, off_q{};
+  int off_depth = 0;
   for (int k = 0; k < 3; ++k) {
-    const int c = detail::compare_coordinate(p, q, k);
+    const FilteredValue* ap[3] = {&abs_p.x, &abs_p.y, &abs_p.z};
+    const FilteredValue* aq[3] = {&abs_q.x, &abs_q.y, &abs_q.z};
+    int c = (*ap[k] * abs_q.w - *aq[k] * abs_p.w).certified_sign(abs_depth);
+    if (c == 0) {
+      if (!origin) {
+        origin = q.is_explicit() ? &q.approx() : &detail::offset_origin({&p});
+        off_p = p.offset_homogeneous<FilteredValue>(*origin);
+        off_q = q.offset_homogeneous<FilteredValue>(*origin);
+        off_depth = depth(1, [&] {
+          const auto hp = p.offset_homogeneous<RoundingDepth>(*origin);
+          const auto hq = q.offset_homogeneous<RoundingDepth>(*origin);
+          return (hp.x * hq.w - hq.x * hp.w).depth;  // the same for every axis
+        });
+      }
+      const FilteredValue* op[3] = {&off_p.x, &off_p.y, &off_p.z};
+      const FilteredValue* oq[3] = {&off_q.x, &off_q.y, &off_q.z};
+      c = (*op[k] * off_q.w - *oq[k] * off_p.w).certified_sign(off_depth);
+    }
+    if (c != 0) {
+      ++implicit_predicate_stats().filtered;
+      c *= w;
+    } else {
+      c = detail::compare_coordinate(p, q, k);
+    }
     if (c != 0) return c;
   }
   return 0;
