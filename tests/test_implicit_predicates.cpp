@@ -327,6 +327,16 @@ TEST(ImplicitPredicates, Orient2dMatchesExactReferenceInEveryProjection) {
       if (got != expected && ++failures <= kMaxReports)
         ADD_FAILURE() << "orient2d(a, b, c, " << plane_name(pl) << "): expected " << expected << ", got " << got
                       << "\n" << operands(s, idx, 3);
+      // The same with cached offset points, about the approximation of a scene point (any
+      // explicit origin is valid; near ones make the filter decide more).
+      const auto origin = P[pick.any()].point.approx();
+      const int got_offset =
+          sign_of(tritri::orient2d(tritri::offset_point(P[idx[0]].point, origin),
+                                   tritri::offset_point(P[idx[1]].point, origin),
+                                   tritri::offset_point(P[idx[2]].point, origin), pl));
+      if (got_offset != expected && ++failures <= kMaxReports)
+        ADD_FAILURE() << "orient2d(OffsetPoint a, b, c, " << plane_name(pl) << "): expected " << expected << ", got "
+                      << got_offset << "\n" << operands(s, idx, 3);
     }
     cases += n;
     return n;
