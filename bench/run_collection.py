@@ -236,9 +236,9 @@ def classify_outcome(returncode, timed_out, tool_json):
     return "error", f"unexpected exit code {returncode}"
 
 
-def run_model(model, root, tool, timeout, live):
+def run_model(model, root, tool, timeout, live, tool_args=()):
     """Runs the tool on one model; the result line as a dict, or None when interrupted."""
-    cmd = [str(tool), *(str(f) for f in model.files), "--json"]
+    cmd = [str(tool), *(str(f) for f in model.files), "--json", *tool_args]
     start = time.monotonic()
     try:
         proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
@@ -394,6 +394,9 @@ def parse_args(argv):
     ap.add_argument("--tool", type=Path, default=DEFAULT_TOOL,
                     help="the per-model tool (default: %(default)s)")
     ap.add_argument("--jobs", type=int, default=2, help="models run at once (default: 2)")
+    ap.add_argument("--tool-arg", dest="tool_args", action="append", default=[], metavar="ARG",
+                    help="an extra argument for the tool, e.g. --tool-arg=--repeat --tool-arg=3 "
+                         "(repeatable)")
     ap.add_argument("--timeout", type=float, default=900,
                     help="seconds per model, 0 for none (default: 900)")
     ap.add_argument("--shard", type=parse_shard, default=(1, 1), metavar="K/N",
@@ -460,7 +463,7 @@ def run_all(todo, root, args):
     pool = concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs)
     try:
         with open(args.out, "a", encoding="utf-8") as out:
-            futures = [pool.submit(run_model, m, root, args.tool, args.timeout, live)
+            futures = [pool.submit(run_model, m, root, args.tool, args.timeout, live, args.tool_args)
                        for m in todo]
             for future in concurrent.futures.as_completed(futures):
                 rec = future.result()

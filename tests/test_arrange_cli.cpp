@@ -9,26 +9,13 @@
 #include <sys/wait.h>
 
 #include "shared_meshes.h"
+#include "test_support.h"
 
 namespace {
 
-struct CliRun {
-  int status;
-  std::string out;  // stdout and stderr
-};
+using CliRun = tritri_test::CommandRun;
 
-CliRun run(const std::string& args) {
-  const std::string cmd = std::string(ARRANGE_BIN) + " " + args + " 2>&1";
-  CliRun r{-1, ""};
-  std::FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int s = pclose(p);
-  r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-  return r;
-}
+CliRun run(const std::string& args) { return tritri_test::run_command(std::string(ARRANGE_BIN) + " " + args + " 2>&1"); }
 
 std::string bad(const char* name) { return (tritri_test::bad_input_dir() / name).string(); }
 

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "shared_meshes.h"
+#include "test_support.h"
 
 namespace {
 
@@ -41,27 +42,7 @@ using arrangements::Tri;
 using arrangements::TriangleSoup;
 using arrangements::Vec3;
 
-// A fresh directory for the files one test writes.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("arrangements_test_" + std::string(info->test_suite_name()) + "_" +
-                                        info->name() + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  ~TempDir() { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& bytes) const {
-    const fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary) << bytes;
-    return p.string();
-  }
-  fs::path path() const { return dir_; }
-
- private:
-  fs::path dir_;
-};
+using tritri_test::TempDir;
 
 // Little / big endian encodings for hand-built binary files.
 template <class T>

@@ -20,6 +20,7 @@
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/mesh_generators.h"
 #include "arrangements/write_off.h"
+#include "test_support.h"
 
 namespace {
 
@@ -34,18 +35,9 @@ struct CliRun {
 // Runs the tool with `args`; stdout through the pipe, stderr through a file.
 CliRun run(const std::string& args, const fs::path& dir) {
   const fs::path err_file = dir / "stderr.txt";
-  const std::string cmd = std::string(COMPARE_BIN) + " " + args + " 2>" + err_file.string();
-  CliRun r;
-  std::FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int s = pclose(p);
-  r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+  const auto r = tritri_test::run_command(std::string(COMPARE_BIN) + " " + args + " 2>" + err_file.string());
   std::ifstream in(err_file);
-  r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return r;
+  return {r.status, r.out, std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>())};
 }
 
 // Minimal JSON reading: the raw value of `key` at any depth (first occurrence): a string

@@ -41,6 +41,8 @@ const char* to_string(InputErrorKind kind) noexcept {
 
 namespace {
 
+using detail::lowercase_extension;
+using detail::read_whole_file;
 using detail::refuse;
 using CgalPoint = CGAL::Simple_cartesian<double>::Point_3;  // what CGAL's readers fill
 using Polygon = std::vector<std::size_t>;
@@ -48,8 +50,7 @@ using Polygon = std::vector<std::size_t>;
 enum class Format { obj, off, stl, ply };
 
 Format format_of(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lowercase_extension(path);
   if (ext == ".obj") return Format::obj;
   if (ext == ".off") return Format::off;
   if (ext == ".stl") return Format::stl;
@@ -57,18 +58,6 @@ Format format_of(const std::string& path) {
   refuse(InputErrorKind::unknown_format, path,
          (ext.empty() ? std::string("no file extension") : "unknown file extension '" + ext + "'") +
              " (supported: .obj .off .stl .ply, any case)");
-}
-
-std::string read_file(const std::string& path) {
-  std::error_code ec;
-  const std::filesystem::file_status status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) refuse(InputErrorKind::unreadable_file, path, "no such file");
-  if (!std::filesystem::is_regular_file(status)) refuse(InputErrorKind::unreadable_file, path, "not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) refuse(InputErrorKind::unreadable_file, path, "cannot open the file");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) refuse(InputErrorKind::unreadable_file, path, "read error");
-  return bytes;
 }
 
 void refuse_if_no_faces(const std::string& path, const detail::FileCounts& expected) {
@@ -172,7 +161,7 @@ void check_soup(const std::string& path, const std::vector<CgalPoint>& points, c
 
 TriangleSoup load_triangle_soup(const std::string& path, std::uint32_t label) {
   const Format format = format_of(path);
-  std::string bytes = read_file(path);
+  std::string bytes = read_whole_file(path);
   if (bytes.empty()) refuse(InputErrorKind::empty_mesh, path, "the file is empty");
 
   std::vector<CgalPoint> points;

@@ -7,11 +7,15 @@
 // then produce (a cross-check). What each accepts is listed in load_triangle_soup.h.
 #pragma once
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -51,6 +55,26 @@ FileCounts check_stl_file(const std::string& path, const std::string& bytes, Stl
 }
 
 // A token for a message: quoted, shortened, non-printable bytes as '?'.
+// The extension of path in lower case, with its dot ("" if none).
+inline std::string lowercase_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+// The whole file, or InputError (unreadable_file) naming why not.
+inline std::string read_whole_file(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) refuse(InputErrorKind::unreadable_file, path, "no such file");
+  if (!std::filesystem::is_regular_file(status)) refuse(InputErrorKind::unreadable_file, path, "not a regular file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) refuse(InputErrorKind::unreadable_file, path, "cannot open the file");
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) refuse(InputErrorKind::unreadable_file, path, "read error");
+  return bytes;
+}
+
 inline std::string quoted(std::string_view token) {
   constexpr std::size_t kMax = 40;
   std::string s = "'";

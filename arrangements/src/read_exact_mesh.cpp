@@ -24,31 +24,20 @@ namespace {
 using detail::quoted;
 using detail::refuse;
 using detail::refuse_at_line;
+using detail::lowercase_extension;
+using detail::read_whole_file;
 
 constexpr long kMaxDecimalExponent = 4096;
 
 enum class Format { obj, off };
 
 Format format_of(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lowercase_extension(path);
   if (ext == ".obj") return Format::obj;
   if (ext == ".off") return Format::off;
   refuse(InputErrorKind::unknown_format, path,
          (ext.empty() ? std::string("no file extension") : "unknown file extension '" + ext + "'") +
              " (read_exact_mesh reads .obj .off, any case)");
-}
-
-std::string read_file(const std::string& path) {
-  std::error_code ec;
-  const std::filesystem::file_status status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) refuse(InputErrorKind::unreadable_file, path, "no such file");
-  if (!std::filesystem::is_regular_file(status)) refuse(InputErrorKind::unreadable_file, path, "not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) refuse(InputErrorKind::unreadable_file, path, "cannot open the file");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) refuse(InputErrorKind::unreadable_file, path, "read error");
-  return bytes;
 }
 
 bool all_digits(std::string_view s) {
@@ -332,7 +321,7 @@ ExactMesh read_off(const std::string& path, std::string_view text) {
 
 ExactMesh read_exact_mesh(const std::string& path) {
   const Format format = format_of(path);
-  const std::string bytes = read_file(path);
+  const std::string bytes = read_whole_file(path);
   return format == Format::obj ? read_obj(path, bytes) : read_off(path, bytes);
 }
 
