@@ -18,8 +18,9 @@
 //                is emitted once)
 //   label_set / label_sets   per output triangle, the union of the label sets of every soup
 //                triangle that covers it
-// Exactness: every decision is orient2d on implicit points in the projection where the
-// triangle is not degenerate (tritri's filtered exact predicates); TPIs are implicit.
+// Exactness: every decision is orient2d on implicit points in the triangle's dominant
+// axis projection (largest normal component; checked exactly to be non-degenerate),
+// through tritri's filtered exact predicates on offset points; TPIs are implicit.
 // Output does not depend on the number of threads.
 // Cost: per triangle, O(n log n)-ish expected point insertion by walking plus constraint
 // insertion by edge flips (worst case quadratic in the triangle's points); parallel over
