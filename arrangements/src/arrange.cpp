@@ -1,6 +1,5 @@
 #include "arrangements/arrange.h"
 
-#include <sys/resource.h>
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
@@ -11,6 +10,7 @@
 
 #include "arrangements/candidate_pairs.h"
 #include "arrangements/input_error.h"
+#include "arrangements/process_usage.h"
 #include "arrangements/mesh_counts.h"
 #include "arrangements/preprocess.h"
 #include "arrangements/propagate_coplanar.h"
@@ -18,16 +18,6 @@
 
 namespace arrangements {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-double peak_rss_mb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;  // kilobytes on Linux
-}
 
 // The point p of a model scaled by 2^k, in the unscaled model's frame: its defining
 // points scaled by 2^-k (exact: preprocessing only scales when that is exact both ways).

@@ -39,26 +39,20 @@ inline int prev3(int k) { return k == 0 ? 2 : k - 1; }
 // triangle's orientation there, so that every local triangle is positive ("CCW").
 class LocalTriangulation {
  public:
-  std::vector<ImplicitPoint> pts;   // local vertices
+  std::deque<ImplicitPoint> pts;    // local vertices (a deque: off[i] points into it)
   std::vector<tritri::OffsetPoint> off;  // their offset coordinates (origin: a corner)
   std::vector<LocalTriangle> tris;
   std::vector<int> vtri;            // a triangle incident to each vertex
 
   LocalTriangulation(tritri::Plane plane, int sign, const Vec3& origin)
-      : plane_(plane), sign_(sign), origin_(origin) {
-    pts.reserve(64);
-  }
+      : plane_(plane), sign_(sign), origin_(origin) {}
 
   int orient(int a, int b, int c) const {
     return sign_ * tritri::to_int(tritri::orient2d(off[a], off[b], off[c], plane_));
   }
 
   int add_vertex(const ImplicitPoint& p) {
-    // pts may reallocate: the offset points keep indices, and are re-pointed below.
-    const ImplicitPoint* before = pts.data();
     pts.push_back(p);
-    if (pts.data() != before)
-      for (std::size_t i = 0; i < off.size(); ++i) off[i].point = &pts[i];
     off.push_back(tritri::offset_point(pts.back(), origin_));
     vtri.push_back(-1);
     return static_cast<int>(pts.size()) - 1;

@@ -2,7 +2,6 @@
 // See --help.
 #include <tbb/global_control.h>
 #include <tbb/info.h>
-#include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
@@ -16,6 +15,7 @@
 #include "arrangements/arrange.h"
 #include "arrangements/check_arrangement.h"
 #include "arrangements/input_error.h"
+#include "arrangements/process_usage.h"
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/stats_json.h"
 #include "arrangements/write_mesh.h"
@@ -65,16 +65,6 @@ exit status: 0 success, 1 bad input (unreadable, unknown format, malformed, NaN/
 out-of-range indices, empty mesh) or failed output, 2 bad command line, 3 --check found
 a violation.
 )";
-
-double peak_rss_mb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;  // kilobytes on Linux
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 }  // namespace
 

@@ -18,6 +18,7 @@
 #include "arrangements/arrange.h"
 #include "arrangements/input_error.h"
 #include "arrangements/load_triangle_soup.h"
+#include "arrangements/process_usage.h"
 #include "arrangements/stats_json.h"
 
 namespace {
@@ -147,7 +148,7 @@ int main(int argc, char** argv) {
   try {
     const auto t0 = std::chrono::steady_clock::now();
     const TriangleSoup input = load_triangle_soups(inputs);
-    const double t_load = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double t_load = seconds_since(t0);
     // Start TBB's workers before timing anything, so that the first run (native) does not
     // pay for creating them.
     {

@@ -184,12 +184,14 @@ inline std::array<int, 2> plane_axes(Plane plane) {
 }
 
 // sign(X_p W_q - X_q W_p) along axis k, times sign(W_p W_q): the sign of p_k - q_k.
-inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, int k) {
+// with_offset = false skips the offset filter stage (for callers that already tried it).
+inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, int k, bool with_offset = true) {
   if (p.is_explicit() && q.is_explicit()) {
     const double a = p.approx()[k], b = q.approx()[k];
     return a < b ? -1 : (a > b ? 1 : 0);
   }
   auto offset_stage = [&] {
+    if (!with_offset) return 0;
     const auto& o = q.is_explicit() ? q.approx() : offset_origin({&p});
     return offset_filter_sign([&](auto tag) {
       using T = decltype(tag);
@@ -269,8 +271,10 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
   return detail::to_sign(-s * w);
 }
 
-// Sign of det[b-a; c-a] in the projection onto `plane`. Exact.
-inline Sign orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c, Plane plane) {
+namespace detail {
+// orient2d on implicit points; with_offset = false skips the offset filter stage.
+inline Sign orient2d_staged(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c, Plane plane,
+                            bool with_offset) {
   if (a.is_explicit() && b.is_explicit() && c.is_explicit())
     return orient2d(a.approx(), b.approx(), c.approx(), plane);
   const auto axes = detail::plane_axes(plane);
@@ -279,6 +283,7 @@ inline Sign orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
   const int w = a.w_sign() * b.w_sign() * c.w_sign();
   // Offset filter stage, as the sign of det3 of the rows (W (p - o) projected, W).
   auto offset_det3 = [&] {
+    if (!with_offset) return 0;
     const auto& o = detail::offset_origin({&a, &b, &c});
     return detail::offset_filter_sign([&](auto tag) {
       using T = decltype(tag);
@@ -314,6 +319,12 @@ inline Sign orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
     return detail::det3(rows[0], rows[1], rows[2]);
   }, detail::shape_of({&a, &b, &c}), offset_det3);
   return detail::to_sign(s * w);
+}
+}  // namespace detail
+
+// Sign of det[b-a; c-a] in the projection onto `plane`. Exact.
+inline Sign orient2d(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c, Plane plane) {
+  return detail::orient2d_staged(a, b, c, plane, /*with_offset=*/true);
 }
 
 // Points with cached offset coordinates, for many predicates on points near one explicit
@@ -364,7 +375,7 @@ inline Sign orient2d(const OffsetPoint& a, const OffsetPoint& b, const OffsetPoi
     ++implicit_predicate_stats().filtered;
     return detail::to_sign(f * pa.w_sign() * pb.w_sign() * pc.w_sign());
   }
-  return orient2d(pa, pb, pc, plane);
+  return detail::orient2d_staged(pa, pb, pc, plane, /*with_offset=*/false);  // the offset filter failed
 }
 
 // Exact lexicographic (x, y, z) comparison: -1 if p < q, 0 if p == q, +1 if p > q.
@@ -422,7 +433,7 @@ inline int compare_xyz(const ImplicitPoint& p, const ImplicitPoint& q) {
       ++implicit_predicate_stats().filtered;
       c *= w;
     } else {
-      c = detail::compare_coordinate(p, q, k);
+      c = detail::compare_coordinate(p, q, k, /*with_offset=*/origin == nullptr);
     }
     if (c != 0) return c;
   }
