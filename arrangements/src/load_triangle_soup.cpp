@@ -1,25 +1,18 @@
-// Stage 1: mesh file -> TriangleSoup (see load_triangle_soup.h).
+// Stage 1: mesh file -> TriangleSoup (see load_triangle_soup.h): the file is read once, as
+// a stream, by the reader of its format (read_obj.cpp, read_off.cpp, read_stl.cpp,
+// read_ply.cpp), which validates it and fills a SoupBuilder in the same pass.
 #include "arrangements/load_triangle_soup.h"
 
-#include <CGAL/IO/OBJ.h>
-#include <CGAL/IO/OFF.h>
-#include <CGAL/IO/PLY.h>
-#include <CGAL/IO/STL.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/exceptions.h>
-
 #include <algorithm>
-#include <cctype>
-#include <cmath>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
 
-#include "mesh_file_checks.h"
+#include "arrangements/triangulate_polygon.h"
+#include "mesh_reader.h"
 
 namespace arrangements {
 
@@ -39,13 +32,79 @@ const char* to_string(InputErrorKind kind) noexcept {
   return "unknown";
 }
 
+namespace detail {
+
+FileBytes::FileBytes(const std::string& path) : path_(path) {
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) refuse(InputErrorKind::unreadable_file, path, "no such file");
+  if (!std::filesystem::is_regular_file(status)) refuse(InputErrorKind::unreadable_file, path, "not a regular file");
+  file_ = std::fopen(path.c_str(), "rb");
+  if (!file_) refuse(InputErrorKind::unreadable_file, path, std::string("cannot open the file: ") + std::strerror(errno));
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  size_ = ec ? 0 : static_cast<std::uint64_t>(size);
+  buffer_.resize(std::size_t{1} << 20);
+}
+
+FileBytes::~FileBytes() {
+  if (file_) std::fclose(file_);
+}
+
+std::size_t FileBytes::refill(std::size_t n) {
+  if (pos_ > 0) {  // keep the unconsumed bytes, at the front
+    std::memmove(buffer_.data(), buffer_.data() + pos_, end_ - pos_);
+    end_ -= pos_;
+    pos_ = 0;
+  }
+  if (n > buffer_.size()) buffer_.resize(std::max(n, 2 * buffer_.size()));
+  while (end_ < n && !eof_) {
+    const std::size_t got = std::fread(buffer_.data() + end_, 1, buffer_.size() - end_, file_);
+    end_ += got;
+    if (got == 0) {
+      if (std::ferror(file_)) refuse(InputErrorKind::unreadable_file, path_, "read error");
+      eof_ = true;
+    }
+  }
+  return end_;
+}
+
+void SoupBuilder::refuse_too_large(const char* what) const {
+  refuse(InputErrorKind::too_large, path_,
+         std::string("more than ") + std::to_string(kMaxIndexCount) + " " + what +
+             " (the pipeline's int indices allow no more)");
+}
+
+void SoupBuilder::add_polygon(std::span<const int> corners) {
+  if (corners.size() - 2 > kMaxIndexCount - triangles.size()) refuse_too_large("triangles");
+  polygon_start_.push_back(polygon_corners_.size());
+  polygon_triangle_.push_back(triangles.size());
+  polygon_corners_.insert(polygon_corners_.end(), corners.begin(), corners.end());
+  triangles.resize(triangles.size() + (corners.size() - 2));
+}
+
+void SoupBuilder::finish() {
+  std::vector<Tri> polygon;
+  for (std::size_t k = 0; k < polygon_start_.size(); ++k) {
+    const std::size_t begin = polygon_start_[k];
+    const std::size_t end = k + 1 < polygon_start_.size() ? polygon_start_[k + 1] : polygon_corners_.size();
+    polygon.clear();
+    triangulate_polygon(vertices, std::span<const int>(polygon_corners_.data() + begin, end - begin), polygon);
+    if (polygon.size() != end - begin - 2)
+      throw std::logic_error("triangulate_polygon returned " + std::to_string(polygon.size()) + " triangles for " +
+                             std::to_string(end - begin) + " corners");
+    std::copy(polygon.begin(), polygon.end(), triangles.begin() + static_cast<std::ptrdiff_t>(polygon_triangle_[k]));
+  }
+  std::vector<int>().swap(polygon_corners_);
+  std::vector<std::size_t>().swap(polygon_start_);
+  std::vector<std::size_t>().swap(polygon_triangle_);
+}
+
+}  // namespace detail
+
 namespace {
 
 using detail::lowercase_extension;
-using detail::read_whole_file;
 using detail::refuse;
-using CgalPoint = CGAL::Simple_cartesian<double>::Point_3;  // what CGAL's readers fill
-using Polygon = std::vector<std::size_t>;
 
 enum class Format { obj, off, stl, ply };
 
@@ -60,122 +119,25 @@ Format format_of(const std::string& path) {
              " (supported: .obj .off .stl .ply, any case)");
 }
 
-void refuse_if_no_faces(const std::string& path, const detail::FileCounts& expected) {
-  if (expected.faces == 0) refuse(InputErrorKind::empty_mesh, path, "the mesh has no faces");
-}
-
-// Calls one of CGAL's readers; its failure after our validation is still refused cleanly.
-template <class Read>
-void run_cgal_reader(const std::string& path, const char* format_name, Read read) {
-  bool ok = false;
-  try {
-    ok = read();
-  } catch (const CGAL::Failure_exception& e) {
-    refuse(InputErrorKind::malformed, path, std::string("CGAL's ") + format_name + " reader failed: " + e.what());
-  }
-  if (!ok) refuse(InputErrorKind::malformed, path, std::string("CGAL's ") + format_name + " reader refused the file");
-}
-
-void read_with_cgal(const std::string& path, Format format, std::string bytes, std::vector<CgalPoint>& points,
-                    std::vector<Polygon>& polygons, detail::FileCounts& expected) {
-  switch (format) {
-    case Format::obj: {
-      expected = detail::check_obj_file(path, bytes);
-      refuse_if_no_faces(path, expected);
-      // CGAL skips from one face corner to the next at a ' ', not at a tab.
-      std::replace(bytes.begin(), bytes.end(), '\t', ' ');
-      std::istringstream in(std::move(bytes));
-      run_cgal_reader(path, "OBJ", [&] { return CGAL::IO::read_OBJ(in, points, polygons); });
-      break;
-    }
-    case Format::off: {
-      expected = detail::check_off_file(path, bytes);
-      refuse_if_no_faces(path, expected);
-      std::istringstream in(std::move(bytes));
-      run_cgal_reader(path, "OFF", [&] { return CGAL::IO::read_OFF(in, points, polygons); });
-      break;
-    }
-    case Format::ply: {
-      expected = detail::check_ply_file(path, bytes);
-      refuse_if_no_faces(path, expected);
-      std::istringstream in(std::move(bytes), std::ios::in | std::ios::binary);
-      CGAL::IO::set_mode(in, CGAL::IO::BINARY);
-      run_cgal_reader(path, "PLY", [&] { return CGAL::IO::read_PLY(in, points, polygons); });
-      break;
-    }
-    case Format::stl: {
-      const detail::StlEncoding encoding = detail::stl_encoding(path, bytes);
-      expected = detail::check_stl_file(path, bytes, encoding);
-      refuse_if_no_faces(path, expected);
-      std::istringstream in(std::move(bytes), std::ios::in | std::ios::binary);
-      // The two halves of CGAL::IO::read_STL, called directly: see check_stl_file.cpp.
-      if (encoding == detail::StlEncoding::binary) {
-        CGAL::IO::set_mode(in, CGAL::IO::BINARY);
-        run_cgal_reader(path, "binary STL",
-                        [&] { return CGAL::IO::internal::parse_binary_STL(in, points, polygons); });
-      } else {
-        run_cgal_reader(path, "ASCII STL", [&] { return CGAL::IO::internal::parse_ASCII_STL(in, points, polygons); });
-      }
-      expected.vertices = points.size();  // CGAL merges equal STL corners: no count to compare
-      break;
-    }
-  }
-}
-
-// The checks that do not trust the validators: what goes into the soup is valid.
-void check_soup(const std::string& path, const std::vector<CgalPoint>& points, const std::vector<Polygon>& polygons,
-                const detail::FileCounts& expected) {
-  std::size_t corners = 0;
-  for (const Polygon& p : polygons) corners += p.size();
-  if (points.size() != expected.vertices || polygons.size() != expected.faces || corners != expected.corners)
-    refuse(InputErrorKind::malformed, path,
-           "CGAL's reader read " + std::to_string(points.size()) + " vertices, " + std::to_string(polygons.size()) +
-               " faces, " + std::to_string(corners) + " face corners; the file has " +
-               std::to_string(expected.vertices) + ", " + std::to_string(expected.faces) + ", " +
-               std::to_string(expected.corners));
-  if (polygons.empty()) refuse(InputErrorKind::empty_mesh, path, "the mesh has no faces");
-  if (points.size() > detail::kMaxIndexCount)
-    refuse(InputErrorKind::too_large, path, std::to_string(points.size()) + " vertices (at most " +
-                                                std::to_string(detail::kMaxIndexCount) + " are supported)");
-  for (std::size_t v = 0; v < points.size(); ++v)
-    if (!std::isfinite(points[v].x()) || !std::isfinite(points[v].y()) || !std::isfinite(points[v].z()))
-      refuse(InputErrorKind::non_finite_coordinate, path, "vertex " + std::to_string(v + 1) + " is not finite");
-  std::size_t triangles = 0;
-  for (std::size_t f = 0; f < polygons.size(); ++f) {
-    if (polygons[f].size() < 3)
-      refuse(InputErrorKind::too_few_corners, path, "face " + std::to_string(f + 1) + " has " +
-                                                        std::to_string(polygons[f].size()) + " corners");
-    for (std::size_t v : polygons[f])
-      if (v >= points.size())
-        refuse(InputErrorKind::index_out_of_range, path,
-               "face " + std::to_string(f + 1) + ": vertex index " + std::to_string(v) +
-                   " out of range (the file has " + std::to_string(points.size()) + " vertices)");
-    triangles += polygons[f].size() - 2;
-  }
-  if (triangles > detail::kMaxIndexCount)
-    refuse(InputErrorKind::too_large, path, std::to_string(triangles) + " triangles (at most " +
-                                                std::to_string(detail::kMaxIndexCount) + " are supported)");
-}
-
 }  // namespace
 
 TriangleSoup load_triangle_soup(const std::string& path, std::uint32_t label) {
   const Format format = format_of(path);
-  std::string bytes = read_whole_file(path);
-  if (bytes.empty()) refuse(InputErrorKind::empty_mesh, path, "the file is empty");
-
-  std::vector<CgalPoint> points;
-  std::vector<Polygon> polygons;
-  detail::FileCounts expected;
-  read_with_cgal(path, format, std::move(bytes), points, polygons, expected);
-  check_soup(path, points, polygons, expected);
+  detail::FileBytes in(path);
+  if (in.size() == 0 && in.fill(1) == 0) refuse(InputErrorKind::empty_mesh, path, "the file is empty");
+  detail::SoupBuilder builder(path);
+  switch (format) {
+    case Format::obj: detail::read_obj(in, builder); break;
+    case Format::off: detail::read_off(in, builder); break;
+    case Format::stl: detail::read_stl(in, builder); break;
+    case Format::ply: detail::read_ply(in, builder); break;
+  }
+  if (builder.triangles.empty()) refuse(InputErrorKind::empty_mesh, path, "the mesh has no faces");
+  builder.finish();
 
   TriangleSoup soup;
-  soup.vertices.reserve(points.size());
-  for (const CgalPoint& p : points) soup.vertices.push_back({p.x(), p.y(), p.z()});
-  for (const Polygon& p : polygons)
-    for (std::size_t i = 1; i + 1 < p.size(); ++i)  // fan from the first corner
-      soup.triangles.push_back({static_cast<int>(p[0]), static_cast<int>(p[i]), static_cast<int>(p[i + 1])});
+  soup.vertices = std::move(builder.vertices);
+  soup.triangles = std::move(builder.triangles);
   soup.labels.assign(soup.triangles.size(), 0);
   soup.label_sets = {LabelSet{label}};
   soup.source.resize(soup.triangles.size());
@@ -186,7 +148,11 @@ TriangleSoup load_triangle_soup(const std::string& path, std::uint32_t label) {
 TriangleSoup load_triangle_soups(const std::vector<std::string>& paths) {
   TriangleSoup all;
   for (std::size_t i = 0; i < paths.size(); ++i) {
-    const TriangleSoup one = load_triangle_soup(paths[i], static_cast<std::uint32_t>(i));
+    TriangleSoup one = load_triangle_soup(paths[i], static_cast<std::uint32_t>(i));
+    if (i == 0) {  // labels 0, label_sets {{0}}, source 0..: as they are (no copy)
+      all = std::move(one);
+      continue;
+    }
     if (all.vertices.size() + one.vertices.size() > detail::kMaxIndexCount ||
         all.triangles.size() + one.triangles.size() > detail::kMaxIndexCount)
       refuse(InputErrorKind::too_large, paths[i], "the input files together have more than " +

@@ -1,10 +1,8 @@
-// arrangements/src/mesh_file_checks.h (internal to load_triangle_soup)
+// arrangements/src/mesh_file_checks.h (internal to the mesh readers)
 //
-// Validators that run on a file's bytes before CGAL's reader sees them. Each one walks
-// the file the way CGAL's reader will, refuses (InputError, with a line number or an
-// item number) anything that would make the reader crash, loop, allocate without bound,
-// silently misread, or fail without saying why, and returns the counts the reader must
-// then produce (a cross-check). What each accepts is listed in load_triangle_soup.h.
+// Helpers shared by the mesh readers (load_triangle_soup's streaming readers, see
+// mesh_reader.h, and read_exact_mesh): refusing with InputError, quoting tokens for
+// messages, strict number parsing, and a cursor over text held in memory.
 #pragma once
 
 #include <cctype>
@@ -26,24 +24,6 @@
 
 namespace arrangements::detail {
 
-// What a validated file holds.
-struct FileCounts {
-  std::size_t vertices = 0;
-  std::size_t faces = 0;
-  std::size_t corners = 0;  // sum of the face sizes
-};
-
-FileCounts check_obj_file(const std::string& path, const std::string& bytes);
-FileCounts check_off_file(const std::string& path, const std::string& bytes);
-FileCounts check_ply_file(const std::string& path, const std::string& bytes);
-
-enum class StlEncoding { ascii, binary };
-// Binary when the size is exactly 84 + 50 x (triangle count in the header), else ASCII
-// when the first word is "solid"; throws otherwise (truncated binary, not an STL).
-StlEncoding stl_encoding(const std::string& path, const std::string& bytes);
-// vertices is left 0: CGAL's STL reader merges equal corners, so it has no file count.
-FileCounts check_stl_file(const std::string& path, const std::string& bytes, StlEncoding encoding);
-
 // ---- shared helpers --------------------------------------------------------------------
 
 [[noreturn]] inline void refuse(InputErrorKind kind, const std::string& path, const std::string& what) {
@@ -54,7 +34,6 @@ FileCounts check_stl_file(const std::string& path, const std::string& bytes, Stl
   refuse(kind, path, "line " + std::to_string(line) + ": " + what);
 }
 
-// A token for a message: quoted, shortened, non-printable bytes as '?'.
 // The extension of path in lower case, with its dot ("" if none).
 inline std::string lowercase_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -75,12 +54,23 @@ inline std::string read_whole_file(const std::string& path) {
   return bytes;
 }
 
+// A token for a message: quoted, shortened; bytes that are not printable ASCII (and the
+// backslash) escaped as \xHH (\\), so a message names the token as it is in the file.
 inline std::string quoted(std::string_view token) {
   constexpr std::size_t kMax = 40;
+  static constexpr char kHex[] = "0123456789ABCDEF";
   std::string s = "'";
   for (std::size_t i = 0; i < token.size() && i < kMax; ++i) {
     const unsigned char c = static_cast<unsigned char>(token[i]);
-    s += (c >= 32 && c < 127) ? static_cast<char>(c) : '?';
+    if (c == '\\') {
+      s += "\\\\";
+    } else if (c >= 32 && c < 127) {
+      s += static_cast<char>(c);
+    } else {
+      s += "\\x";
+      s += kHex[c >> 4];
+      s += kHex[c & 15];
+    }
   }
   if (token.size() > kMax) s += "...";
   return s + "'";
@@ -89,9 +79,9 @@ inline std::string quoted(std::string_view token) {
 enum class RealParse { ok, not_a_number, non_finite };
 
 // Strict decimal number (optional sign, digits, '.', exponent) that must fill the whole
-// token, rounded correctly to F (float or double). Accepts exactly what the C++ stream
-// extraction in CGAL's readers accepts as a complete token, with the same value; NaN,
-// infinities and decimals beyond F's range are non_finite (the stream refuses them too).
+// token, rounded correctly to F (float or double) by std::from_chars (libstdc++'s fast
+// path, fast_float's algorithm); NaN, infinities and decimals beyond F's range are
+// non_finite; decimals that underflow become the correctly rounded subnormal or zero.
 template <class F>
 RealParse parse_real(std::string_view token, F& value) {
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
@@ -102,8 +92,8 @@ RealParse parse_real(std::string_view token, F& value) {
   const auto r = std::from_chars(first, last, value, std::chars_format::general);
   if (r.ptr != last) return RealParse::not_a_number;
   if (r.ec == std::errc::result_out_of_range) {
-    // Overflow is refused; underflow rounds to a subnormal or zero, as the stream does
-    // (which calls strtod / strtof).
+    // Overflow is refused; underflow rounds to a subnormal or zero, as strtod / strtof
+    // round it (a rare path: from_chars reports results that round to zero this way).
     const std::string copy(token);
     F v;
     if constexpr (std::is_same_v<F, float>)
