@@ -75,8 +75,6 @@ ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) 
   PreprocessOptions popt;
   popt.scale = options.scale;
   TriangleSoup soup = preprocess(input, popt, pre);
-  if (soup.triangles.empty())
-    throw InputError(InputErrorKind::empty_mesh, "no triangle is left after removing degenerate triangles");
   s.merged_vertices = pre.merged_vertices;
   s.removed_degenerate = pre.removed_degenerate;
   s.removed_duplicate = pre.removed_duplicate;

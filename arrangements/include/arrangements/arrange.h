@@ -15,8 +15,8 @@
 // Output:  ArrangeResult: the output mesh (in the input's coordinates, also with scale:
 //          its points are rebuilt from the unscaled defining points, exactly), the statistics (counts and stage times), and
 //          optionally the preprocessed soup and the intersection graph.
-// Throws InputError when nothing is left to arrange (empty input, or no triangle
-// survives preprocessing) or the model cannot be scaled.
+// A soup with no triangle left after preprocessing (all degenerate, or none at all) is
+// valid: its arrangement is empty. Throws InputError only when the model cannot be scaled.
 // Exact throughout; deterministic for any number of threads.
 #pragma once
 

@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""Time `arrange --stats` on single large polygon faces (one OFF face with N corners).
+
+Workloads (generated, deterministic): a regular N-gon and a star-shaped N-gon with random
+radii, both in the plane z = 0.5, and a comb (a non-convex polygon with N/2 teeth).
+Prints one row per workload: corners, output triangles, seconds (min of --runs) and peak
+memory (MB), from arrange's own --stats JSON. With --baseline BIN, the older binary runs
+alternately in the same invocation and the ratios are printed.
+
+usage: bench/polygon_bench.py --arrange build/bin/arrange [--corners 30000] [--runs 3]
+                              [--baseline OLD_ARRANGE] [--json]
+"""
+import argparse
+import json
+import math
+import os
+import random
+import subprocess
+import sys
+import tempfile
+
+
+def positive_int(text):
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not an integer: {text!r}") from None
+    if not 1 <= value <= 10_000_000:
+        raise argparse.ArgumentTypeError(f"out of range [1, 10000000]: {value}")
+    return value
+
+
+def polygon(kind, n):
+    rng = random.Random(n)
+    if kind == "regular":
+        return [(math.cos(2 * math.pi * i / n), math.sin(2 * math.pi * i / n)) for i in range(n)]
+    if kind == "star":
+        return [((0.5 + rng.random()) * math.cos(2 * math.pi * i / n),
+                 (0.5 + rng.random()) * math.sin(2 * math.pi * i / n)) for i in range(n)]
+    # comb: teeth along the x axis, a straight back at y = -1
+    teeth = max(1, (n - 2) // 2)
+    top = []
+    for i in range(teeth):
+        x = i / teeth
+        top += [(x, 1.0 if i % 2 == 0 else 0.5)]
+        top += [(x + 0.5 / teeth, 0.0)]
+    pts = [(1.0, -1.0), (0.0, -1.0)] + top
+    return pts[:n] if len(pts) >= n else pts
+
+
+def write_off(path, pts):
+    with open(path, "w") as f:
+        f.write(f"OFF\n{len(pts)} 1 0\n")
+        for x, y in pts:
+            f.write(f"{x!r} {y!r} 0.5\n")
+        f.write(f"{len(pts)} " + " ".join(map(str, range(len(pts)))) + "\n")
+
+
+def run(binary, path):
+    out = subprocess.run([binary, path, "--stats"], capture_output=True, text=True, check=True)
+    return json.loads(out.stdout)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--arrange", required=True, help="the arrange binary to time")
+    ap.add_argument("--baseline", help="an older arrange binary, run alternately")
+    ap.add_argument("--corners", type=positive_int, default=30000)
+    ap.add_argument("--runs", type=positive_int, default=3)
+    ap.add_argument("--json", action="store_true", help="one JSON object per workload")
+    args = ap.parse_args()
+    with tempfile.TemporaryDirectory() as tmp:
+        for kind in ("regular", "star", "comb"):
+            path = os.path.join(tmp, f"{kind}.off")
+            pts = polygon(kind, args.corners)
+            write_off(path, pts)
+            best = {}
+            for _ in range(args.runs):
+                for name, binary in (("new", args.arrange), ("base", args.baseline)):
+                    if not binary:
+                        continue
+                    s = run(binary, path)
+                    if name not in best or s["t_total_s"] < best[name]["t_total_s"]:
+                        best[name] = s
+            row = {"workload": kind, "corners": len(pts), "out_triangles": best["new"]["out_triangles"],
+                   "candidate_pairs": best["new"]["candidate_pairs"], "t_total_s": best["new"]["t_total_s"],
+                   "peak_rss_mb": best["new"]["peak_rss_mb"]}
+            if "base" in best:
+                row["baseline_t_total_s"] = best["base"]["t_total_s"]
+                row["baseline_peak_rss_mb"] = best["base"]["peak_rss_mb"]
+                row["time_ratio"] = row["t_total_s"] / max(best["base"]["t_total_s"], 1e-9)
+            print(json.dumps(row) if args.json else
+                  "  ".join(f"{k}={v:.3f}" if isinstance(v, float) else f"{k}={v}" for k, v in row.items()))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
