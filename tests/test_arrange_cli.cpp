@@ -1,17 +1,31 @@
 // The `arrange` command line: exit codes, messages and the --stats JSON contract, run as a
-// separate process (the path of the binary comes from CMake).
+// separate process (the path of the binary comes from CMake). Hostile option values (every
+// option, table-driven) must be usage errors: exit status 2, a message, never a signal; the
+// same for make_test_meshes (found beside arrange).
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <regex>
 #include <string>
-#include <sys/wait.h>
+#include <vector>
 
+#include "arrangements/arrange.h"
+#include "arrangements/stats_json.h"
+#include "arrangements/thread_count.h"
 #include "shared_meshes.h"
 #include "test_support.h"
 
+extern char** environ;
+
 namespace {
+
+namespace fs = std::filesystem;
 
 using CliRun = tritri_test::CommandRun;
 
@@ -70,6 +84,169 @@ TEST(ArrangeCli, StatsJsonHasTheContractKeys) {
   // (the same counts as the upstream 2020 pipeline reports for this file).
   EXPECT_NE(r.out.find("\"intersecting_pairs\": 132,"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"intersection_points\": 132,"), std::string::npos) << r.out;
+}
+
+// ---------------------------------------------------------------------------------------
+// Hostile arguments, run without a shell so that empty arguments and spaces pass unchanged.
+
+struct Exit {
+  bool exited = false;  // ended by exit(), not by a signal
+  int code = -1;        // exit status (exited)
+  int signal = 0;       // the signal that ended it (!exited)
+  std::string out, err;
+};
+
+Exit spawn(const std::string& program, const std::vector<std::string>& args, const fs::path& dir) {
+  std::vector<std::string> all{program};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  Exit e;
+  pid_t pid = 0;
+  const int started = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (started != 0) {
+    ADD_FAILURE() << "cannot start " << program;
+    return e;
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  e.exited = WIFEXITED(status);
+  e.code = e.exited ? WEXITSTATUS(status) : -1;
+  e.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  e.out = slurp(out);
+  e.err = slurp(err);
+  return e;
+}
+
+std::string shown(const std::vector<std::string>& args) {
+  std::string s;
+  for (const auto& a : args) s += (s.empty() ? "'" : " '") + a + "'";
+  return s;
+}
+
+// Values no integer option takes: empty, signs, spaces, prefixes, suffixes, fractions,
+// NaN, numbers beyond every range (2^31 - 1, 2^63, 2^64, 10^30), an option.
+const std::vector<std::string> kBadIntegers = {
+    "", "-1", "-0", "+5", " 5", "5 ", "5x", "0x10", "1e3", "1.5", "nan", "NaN", "inf", "two",
+    "2147483647", "2147483648", "9223372036854775807", "9223372036854775808", "18446744073709551616",
+    "1000000000000000000000000000000", "--stats"};
+
+// A two-triangle model (B pierces A) in `dir`.
+std::string two_triangles(const fs::path& dir) {
+  const fs::path p = dir / "two_triangles.off";
+  std::ofstream(p) << "OFF\n6 2 0\n0 0 0\n4 0 0\n0 4 0\n1 1 -1\n1 1 1\n2 1 1\n3 0 1 2\n3 3 4 5\n";
+  return p.string();
+}
+
+// Every case must end with exit status 2, a message naming the tool, no output, no signal.
+void expect_usage_errors(const std::string& program, const char* tool,
+                         const std::vector<std::vector<std::string>>& cases, const fs::path& dir) {
+  for (const auto& args : cases) {
+    const Exit e = spawn(program, args, dir);
+    EXPECT_TRUE(e.exited) << tool << " " << shown(args) << ": killed by signal " << e.signal;
+    EXPECT_EQ(e.code, 2) << tool << " " << shown(args) << ": " << e.err;
+    EXPECT_NE(e.err.find(std::string(tool) + ": "), std::string::npos) << shown(args) << ": " << e.err;
+    EXPECT_EQ(e.out, "") << tool << " " << shown(args) << " wrote output";
+  }
+}
+
+TEST(ArrangeCli, EveryHostileOptionValueIsAUsageError) {
+  tritri_test::TempDir dir;
+  const std::string mesh = two_triangles(dir.path());
+  std::vector<std::vector<std::string>> cases;
+  // --stats first: an argument wrongly accepted would print JSON.
+  for (const std::string& v : kBadIntegers) cases.push_back({mesh, "--stats", "--threads", v});
+  for (const char* v : {"1025", "4096", "65536", "100000"}) cases.push_back({mesh, "--stats", "--threads", v});
+  for (const char* opt : {"-o", "--output"})
+    for (const std::string v : {"", "x.txt", "noextension", "dir.ply/", "x.", "--stats"})
+      cases.push_back({mesh, "--stats", opt, v});
+  for (const std::string v : {"", "magic", "TRITRI", " tritri", "tritri ", "--stats"})
+    cases.push_back({mesh, "--stats", "--classifier", v});
+  for (const char* opt : {"--threads", "-o", "--output", "--classifier"}) cases.push_back({mesh, "--stats", opt});
+  const std::vector<std::vector<std::string>> twice = {
+      {"--threads", "1", "--threads", "1"},     {"--threads", "1", "--threads", "2"},
+      {"-o", "a.off", "-o", "a.off"},           {"-o", "a.off", "--output", "b.off"},
+      {"--classifier", "native", "--classifier", "tritri"}};
+  for (auto args : twice) {
+    for (auto& a : args)
+      if (a.ends_with(".off")) a = dir.path(a);
+    args.insert(args.begin(), {mesh, "--stats"});
+    cases.push_back(args);
+  }
+  for (const char* opt : {"--bogus", "-x", "--threads=4", "--", "---", "--STATS", "-O"})
+    cases.push_back({mesh, "--stats", opt});
+  cases.push_back({mesh, "--stats", ""});  // an empty input file name
+  cases.push_back({"", "--stats"});
+  cases.push_back({});
+  cases.push_back({"--stats"});
+  cases.push_back({mesh, "--stats", "--exact", "-o", dir.path("x.ply")});
+  expect_usage_errors(ARRANGE_BIN, "arrange", cases, dir.path());
+  EXPECT_EQ(dir.entries(), std::set<std::string>({"stdout.txt", "stderr.txt", "two_triangles.off"}))
+      << "nothing was written";
+}
+
+TEST(ArrangeCli, ThreadCountsUpToTheCapRun) {
+  tritri_test::TempDir dir;
+  const std::string mesh = two_triangles(dir.path());
+  for (const std::string& v : {std::string("0"), std::string("1"), std::string("0002"), std::to_string(arrangements::kMaxThreads)}) {
+    const Exit e = spawn(ARRANGE_BIN, {mesh, "--stats", "--threads", v, "--check"}, dir.path());
+    ASSERT_TRUE(e.exited) << v << ": signal " << e.signal;
+    EXPECT_EQ(e.code, 0) << v << ": " << e.err;
+    if (v != "0") EXPECT_NE(e.out.find("\"threads\": " + std::to_string(std::stoi(v)) + ","), std::string::npos) << e.out;
+    EXPECT_NE(e.out.find("\"intersection_points\": 2,"), std::string::npos) << e.out;
+  }
+  const Exit help = spawn(ARRANGE_BIN, {"--help"}, dir.path());
+  EXPECT_NE(help.out.find("to " + std::to_string(arrangements::kMaxThreads)), std::string::npos) << help.out;
+}
+
+// The --stats JSON has exactly the keys of for_each_stat, in its order (the Python module's
+// stats dict is filled from the same list; tests/python/test_bindings.py compares the two).
+TEST(ArrangeCli, StatsJsonKeysAreTheSharedList) {
+  tritri_test::TempDir dir;
+  const Exit e = spawn(ARRANGE_BIN, {two_triangles(dir.path()), "--stats"}, dir.path());
+  ASSERT_EQ(e.code, 0) << e.err;
+  std::vector<std::string> printed, listed;
+  const std::regex key("\"([a-z0-9_]+)\": ");
+  for (auto it = std::sregex_iterator(e.out.begin(), e.out.end(), key); it != std::sregex_iterator(); ++it)
+    printed.push_back((*it)[1]);
+  arrangements::for_each_stat(arrangements::ArrangeStats{},
+                              [&](const char* k, const auto&, int) { listed.push_back(k); });
+  EXPECT_EQ(printed, listed) << e.out;
+  EXPECT_EQ(listed.size(), 29u);
+}
+
+TEST(MakeTestMeshesCli, EveryHostileOptionValueIsAUsageError) {
+  const fs::path program = fs::path(ARRANGE_BIN).parent_path() / "make_test_meshes";
+  if (!fs::exists(program)) GTEST_SKIP() << "make_test_meshes is not built beside arrange";
+  tritri_test::TempDir dir;
+  const std::string out = dir.path("meshes");
+  std::vector<std::vector<std::string>> cases;
+  for (const std::string& v : kBadIntegers) cases.push_back({out, "--rotated-copies", v});
+  for (const char* v : {"0", "129", "100000"}) cases.push_back({out, "--rotated-copies", v});
+  cases.push_back({out, "--rotated-copies"});
+  cases.push_back({out, "--rotated-copies", "1", "--rotated-copies", "1"});
+  for (const char* opt : {"--bogus", "-x", "--rotated-copies=2", "--"}) cases.push_back({out, opt});
+  cases.push_back({out, dir.path("other")});  // two OUTDIRs
+  cases.push_back({""});
+  cases.push_back({});
+  cases.push_back({"--rotated-copies", "2"});
+  expect_usage_errors(program.string(), "make_test_meshes", cases, dir.path());
+  EXPECT_FALSE(fs::exists(out)) << "nothing was written";
+
+  const Exit ok = spawn(program.string(), {out, "--rotated-copies", "1"}, dir.path());
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_TRUE(fs::exists(fs::path(out) / "sphere_copies_1.off"));
 }
 
 }  // namespace

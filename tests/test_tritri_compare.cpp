@@ -3,8 +3,11 @@
 // the injected disagreement, several files as one model, and refused input. The reported
 // number of intersection points is checked against the pipeline run in this process
 // (arrangements::arrange with keep_graph, both classifiers) and, for a two-triangle model,
-// against a count derived by hand.
+// against a count derived by hand. Hostile option values (every option, table-driven) are
+// usage errors: exit status 2 and a message, never a signal.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <spawn.h>
 
 #include <unistd.h>
 #include <sys/wait.h>
@@ -19,8 +22,11 @@
 #include "arrangements/arrange.h"
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/mesh_generators.h"
+#include "arrangements/thread_count.h"
 #include "arrangements/write_off.h"
 #include "test_support.h"
+
+extern char** environ;
 
 namespace {
 
@@ -269,6 +275,78 @@ TEST_F(TritriCompare, HelpExitsWithZeroAndNamesTheContract) {
   for (const char* word : {"--json", "--inject-disagreement", "--threads", "intersection_points", "agree",
                            "exit status"})
     EXPECT_NE(r.out.find(word), std::string::npos) << word;
+}
+
+// Runs the tool with exactly `args` (no shell: empty arguments pass unchanged); status 2 and
+// a message on stderr expected, no signal, nothing on stdout.
+void expect_usage_error(const std::vector<std::string>& args, const fs::path& dir) {
+  std::vector<std::string> all{COMPARE_BIN};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const fs::path out = dir / "spawn_stdout.txt", err = dir / "spawn_stderr.txt";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  const int started = posix_spawn(&pid, COMPARE_BIN, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ASSERT_EQ(started, 0);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  std::string shown;
+  for (const auto& a : args) shown += "'" + a + "' ";
+  auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  const std::string text = slurp(err);
+  EXPECT_FALSE(WIFSIGNALED(status)) << shown << ": killed by signal " << WTERMSIG(status);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << shown << ": status " << status << ": " << text;
+  EXPECT_NE(text.find("tritri-compare: "), std::string::npos) << shown << ": " << text;
+  EXPECT_EQ(slurp(out), "") << shown;
+}
+
+TEST_F(TritriCompare, EveryHostileOptionValueIsAUsageError) {
+  const std::string good = write("good.off", box({0, 0, 0}, {1, 1, 1}));
+  // Values no integer option takes: empty, signs, spaces, prefixes, suffixes, fractions,
+  // NaN, numbers beyond every range (2^31 - 1, 2^63, 2^64, 10^30), an option.
+  const std::vector<std::string> bad_integers = {
+      "", "-1", "-0", "+5", " 5", "5 ", "5x", "0x10", "1e3", "1.5", "nan", "NaN", "inf", "two",
+      "2147483647", "2147483648", "9223372036854775807", "9223372036854775808", "18446744073709551616",
+      "1000000000000000000000000000000", "--json"};
+  std::vector<std::vector<std::string>> cases;
+  for (const char* opt : {"--threads", "--repeat", "--max-differences"}) {
+    for (const std::string& v : bad_integers) cases.push_back({good, "--json", opt, v});
+    cases.push_back({good, "--json", opt});                    // missing value
+    cases.push_back({good, "--json", opt, "1", opt, "1"});     // given twice
+  }
+  // Beyond each option's range: threads above the shared cap (65536 and more crashed oneTBB),
+  // no runs, more differences than listed.
+  for (const char* v : {"1025", "4096", "65536", "70000", "100000", "1000000"})
+    cases.push_back({good, "--json", "--threads", v});
+  cases.push_back({good, "--json", "--repeat", "0"});
+  cases.push_back({good, "--json", "--repeat", "1000001"});
+  cases.push_back({good, "--json", "--max-differences", "1000001"});
+  for (const char* opt : {"--bogus", "-x", "--threads=2", "--", "---", "--JSON"}) cases.push_back({good, "--json", opt});
+  cases.push_back({good, "--json", ""});  // an empty input file name
+  cases.push_back({"", "--json"});
+  cases.push_back({});
+  cases.push_back({"--json"});
+  for (const auto& args : cases) expect_usage_error(args, dir_);
+}
+
+TEST_F(TritriCompare, ThreadCountsUpToTheCapRun) {
+  const std::string good = write("good.off", concatenate(box({0, 0, 0}, {2, 2, 2}), box({1, -1, 0.5}, {3, 3, 2})));
+  for (const int t : {0, 1, arrangements::kMaxThreads}) {
+    const CliRun r = compare(good + " --json --repeat 2 --max-differences 0 --threads " + std::to_string(t));
+    EXPECT_EQ(r.status, 0) << t << ": " << r.err;
+    EXPECT_EQ(raw_value(r.out, "agree"), "true") << r.out;
+    if (t > 0) EXPECT_EQ(integer(raw_value(r.out, "tritri"), "threads"), t);
+  }
+  EXPECT_NE(compare("--help").out.find("to " + std::to_string(arrangements::kMaxThreads)), std::string::npos);
 }
 
 }  // namespace

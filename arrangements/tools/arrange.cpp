@@ -7,9 +7,13 @@
 #include <cstdio>
 #include <cctype>
 #include <cstring>
+#include <cstdlib>
 #include <exception>
-#include <iostream>
+#include <filesystem>
+#include <optional>
+#include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "arrangements/arrange.h"
@@ -18,6 +22,7 @@
 #include "arrangements/process_usage.h"
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/stats_json.h"
+#include "arrangements/thread_count.h"
 #include "arrangements/write_mesh.h"
 
 namespace {
@@ -48,9 +53,11 @@ options:
   --stats                 print one JSON object with counts and stage times on stdout
   --classifier NAME       pair classifier: tritri (tritri::classify through the adapter;
                           default) or native (the 2020 case analysis)
-  --threads N             worker threads (default: all cores)
+  --threads N             worker threads: 0 (the default: all cores) to )" ARRANGEMENTS_MAX_THREADS_STR R"(;
+                          larger values are refused (oneTBB cannot run them safely)
   --scale                 scale coordinates by a power of two into a safe range (exact)
   --help                  this text
+An option that takes a value may be given once; numbers are plain decimal digits.
 
 JSON keys (--stats): in_vertices, in_triangles, merged_vertices, removed_degenerate,
 removed_duplicate, candidate_pairs, intersecting_pairs, intersection_points (distinct new
@@ -62,9 +69,14 @@ t_preprocess_s, t_detect_s, t_classify_s, t_triangulate_s, t_output_s, t_total_s
 peak_rss_mb.
 
 exit status: 0 success, 1 bad input (unreadable, unknown format, malformed, NaN/Inf,
-out-of-range indices, empty mesh) or failed output, 2 bad command line, 3 --check found
-a violation.
+out-of-range indices, empty mesh) or failed output, 2 bad command line (unknown option,
+missing, empty or out-of-range value, option given twice), 3 --check found a violation.
 )";
+
+[[noreturn]] void usage_error(const std::string& message) {
+  std::fprintf(stderr, "arrange: %s (see --help)\n", message.c_str());
+  std::exit(2);
+}
 
 }  // namespace
 
@@ -72,16 +84,17 @@ int main(int argc, char** argv) {
   using namespace arrangements;
   std::vector<std::string> inputs;
   bool stats = false, scale = false, exact = false, check = false;
-  std::string output;
+  std::optional<std::string> output;
   int threads = 0;
   std::string classifier = "tritri";
+  std::set<std::string> given;  // options with a value seen so far (each may be given once)
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    auto value = [&](const char* name) -> std::string {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "arrange: %s needs a value\n", name);
-        std::exit(2);
-      }
+    auto value = [&](const std::string& name) -> std::string {
+      if (!given.insert(name).second) usage_error(name + " given twice");
+      if (i + 1 >= argc) usage_error(name + " needs a value");
+      if (std::string_view(argv[i + 1]).starts_with("--"))  // e.g. `--threads --stats`; write ./--x for such a file
+        usage_error(name + " needs a value, got the option '" + argv[i + 1] + "'");
       return argv[++i];
     };
     if (a == "--help" || a == "-h") {
@@ -90,7 +103,8 @@ int main(int argc, char** argv) {
     } else if (a == "--stats") {
       stats = true;
     } else if (a == "-o" || a == "--output") {
-      output = value("-o");
+      output = value("--output");
+      if (output->empty()) usage_error("--output needs a file name, got ''");
     } else if (a == "--check") {
       check = true;
     } else if (a == "--exact") {
@@ -99,42 +113,28 @@ int main(int argc, char** argv) {
       scale = true;
     } else if (a == "--classifier") {
       classifier = value("--classifier");
+      if (classifier != "native" && classifier != "tritri")
+        usage_error("unknown classifier '" + classifier + "' (known: native, tritri)");
     } else if (a == "--threads") {
       const std::string v = value("--threads");
-      char* end = nullptr;
-      const long n = std::strtol(v.c_str(), &end, 10);
-      if (*end != '\0' || n < 0 || n > 4096) {
-        std::fprintf(stderr, "arrange: --threads needs a non-negative integer, got '%s'\n", v.c_str());
-        return 2;
-      }
-      threads = static_cast<int>(n);
+      const auto n = parse_count(v, 0, kMaxThreads);
+      if (!n) usage_error("--threads needs an integer from 0 to " + std::to_string(kMaxThreads) + ", got '" + v + "'");
+      threads = static_cast<int>(*n);
     } else if (a.size() > 1 && a[0] == '-') {
-      std::fprintf(stderr, "arrange: unknown option '%s' (see --help)\n", a.c_str());
-      return 2;
+      usage_error("unknown option '" + a + "'");
+    } else if (a.empty()) {
+      usage_error("an input file name is empty");
     } else {
       inputs.push_back(a);
     }
   }
-  if (inputs.empty()) {
-    std::fprintf(stderr, "arrange: no input file (see --help)\n");
-    return 2;
-  }
-  if (classifier != "native" && classifier != "tritri") {
-    std::fprintf(stderr, "arrange: unknown classifier '%s' (known: native, tritri)\n", classifier.c_str());
-    return 2;
-  }
-  if (!output.empty()) {
-    std::string ext = output.substr(output.find_last_of('.') == std::string::npos ? output.size()
-                                                                                    : output.find_last_of('.'));
+  if (inputs.empty()) usage_error("no input file");
+  if (output) {
+    std::string ext = std::filesystem::path(*output).extension().string();
     for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (ext != ".obj" && ext != ".off" && ext != ".ply") {
-      std::fprintf(stderr, "arrange: unknown output format '%s' (known: .obj .off .ply)\n", output.c_str());
-      return 2;
-    }
-    if (exact && ext == ".ply") {
-      std::fprintf(stderr, "arrange: --exact needs an .obj or .off output\n");
-      return 2;
-    }
+    if (ext != ".obj" && ext != ".off" && ext != ".ply")
+      usage_error("unknown output format '" + *output + "' (known: .obj .off .ply)");
+    if (exact && ext == ".ply") usage_error("--exact needs an .obj or .off output");
   }
   const int workers = threads > 0 ? threads : tbb::info::default_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, workers);
@@ -150,11 +150,11 @@ int main(int argc, char** argv) {
     ArrangeResult result = arrange(input, options);
     ArrangeStats& s = result.stats;
     s.t_load_s = t_load;
-    if (!output.empty()) {
+    if (output) {
       const auto tw = std::chrono::steady_clock::now();
       WriteOptions wo;
       wo.exact = exact;
-      write_mesh(output, result.mesh, wo);
+      write_mesh(*output, result.mesh, wo);
       s.t_output_s += seconds_since(tw);
     }
     s.t_total_s = seconds_since(t0);

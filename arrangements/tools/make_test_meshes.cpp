@@ -4,9 +4,12 @@
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "arrangements/mesh_generators.h"
+#include "arrangements/thread_count.h"
 #include "arrangements/write_off.h"
 
 namespace {
@@ -20,41 +23,57 @@ Writes generated test meshes into OUTDIR (created if needed):
   grid_through_sphere.off  a flat grid cutting a sphere
   sphere_copies_K.off      K copies of a sphere rotated about the z axis (only with
                            --rotated-copies K; intersections grow like K^2: K = 8 with the
-                           default resolution gives over a million intersection points)
+                           default resolution gives over a million intersection points;
+                           K from 1 to 128)
+--rotated-copies may be given once; K is plain decimal digits.
+exit status: 0 success, 1 the files could not be written, 2 bad command line.
 )";
+
+// Each copy has about 39,000 triangles: 128 copies write about 5 million triangles.
+constexpr long long kMaxCopies = 128;
+
+[[noreturn]] void usage_error(const std::string& message) {
+  std::fprintf(stderr, "make_test_meshes: %s (see --help)\n", message.c_str());
+  std::exit(2);
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace arrangements;
-  std::string out;
+  std::optional<std::string> out;
   int copies = 0;
+  bool copies_given = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
       return 0;
-    } else if (a == "--rotated-copies" && i + 1 < argc) {
-      copies = std::atoi(argv[++i]);
-      if (copies < 1) {
-        std::fprintf(stderr, "make_test_meshes: --rotated-copies needs a positive integer\n");
-        return 2;
-      }
-    } else if (a[0] == '-') {
-      std::fprintf(stderr, "make_test_meshes: unknown option '%s' (see --help)\n", a.c_str());
-      return 2;
+    } else if (a == "--rotated-copies") {
+      if (copies_given) usage_error("--rotated-copies given twice");
+      copies_given = true;
+      if (i + 1 >= argc) usage_error("--rotated-copies needs a value");
+      if (std::string_view(argv[i + 1]).starts_with("--"))
+        usage_error("--rotated-copies needs a value, got the option '" + std::string(argv[i + 1]) + "'");
+      const std::string v = argv[++i];
+      const auto k = parse_count(v, 1, kMaxCopies);
+      if (!k) usage_error("--rotated-copies needs an integer from 1 to " + std::to_string(kMaxCopies) + ", got '" + v + "'");
+      copies = static_cast<int>(*k);
+    } else if (a.size() > 1 && a[0] == '-') {
+      usage_error("unknown option '" + a + "'");
+    } else if (out) {
+      usage_error("one OUTDIR only, got '" + *out + "' and '" + a + "'");
+    } else if (a.empty()) {
+      usage_error("OUTDIR is empty");
     } else {
       out = a;
     }
   }
-  if (out.empty()) {
-    std::fputs(kUsage, stderr);
-    return 2;
-  }
+  if (!out) usage_error("no OUTDIR");
   try {
-    std::filesystem::create_directories(out);
+    std::filesystem::create_directories(*out);
     auto write = [&](const std::string& name, const TriangleSoup& s) {
-      write_off((std::filesystem::path(out) / name).string(), s.vertices, s.triangles);
+      write_off((std::filesystem::path(*out) / name).string(), s.vertices, s.triangles);
       std::printf("%s: %zu triangles\n", name.c_str(), s.triangles.size());
     };
     write("two_spheres.off", concatenate(uv_sphere({0, 0, 0}, 1.0, 24, 48), uv_sphere({0.6, 0.25, 0.15}, 0.8, 20, 40)));

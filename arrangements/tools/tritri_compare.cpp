@@ -10,7 +10,9 @@
 #include <cstdlib>
 #include <exception>
 #include <numeric>
+#include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <tritri/implicit_predicates.h>
@@ -20,6 +22,7 @@
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/process_usage.h"
 #include "arrangements/stats_json.h"
+#include "arrangements/thread_count.h"
 
 namespace {
 
@@ -35,14 +38,16 @@ Several INPUT files form one model (concatenated, labelled by position).
 
 options:
   --json                  print one JSON object (below) instead of a summary
-  --threads N             worker threads (default: all cores)
+  --threads N             worker threads: 0 (the default: all cores) to )" ARRANGEMENTS_MAX_THREADS_STR R"(;
+                          larger values are refused (oneTBB cannot run them safely)
   --scale                 scale coordinates by a power of two (exact)
-  --max-differences N     list at most N differences (default 10)
-  --repeat N              run each classifier N times, alternating (default 1); the times
-                          reported are each stage's minimum over the runs
+  --max-differences N     list at most N differences, 0 to 1000000 (default 10)
+  --repeat N              run each classifier N times, alternating, 1 to 1000000 (default
+                          1); the times reported are each stage's minimum over the runs
   --inject-disagreement   testing aid: drop one tritri intersection point and one of its
                           segments before comparing (the comparison must then fail)
   --help                  this text
+An option that takes a value may be given once; numbers are plain decimal digits.
 
 JSON keys: file, in_vertices, in_triangles, intersection_points, points_equal,
 segments_equal, counts_equal, euler_equal, agree, differences (list), native and tritri
@@ -51,8 +56,16 @@ out_triangles, euler, orient3d_calls, orient2d_calls, ...), ratio_classify
 (tritri / native classification time), ratio_total.
 
 exit status: 0 the classifiers agree, 1 they disagree (the first differences are listed),
-2 error (bad input or command line).
+2 error (bad input, or a bad command line: unknown option, missing, empty or out-of-range
+value, option given twice).
 )";
+
+constexpr long long kMaxRepeat = 1000000, kMaxDifferences = 1000000;
+
+[[noreturn]] void usage_error(const std::string& message) {
+  std::fprintf(stderr, "tritri-compare: %s (see --help)\n", message.c_str());
+  std::exit(2);
+}
 
 using arrangements::ArrangeResult;
 using arrangements::IntersectionGraph;
@@ -97,20 +110,19 @@ int main(int argc, char** argv) {
   int threads = 0;
   std::size_t max_differences = 10;
   int repeat = 1;
+  std::set<std::string> given;  // options with a value seen so far (each may be given once)
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    auto number = [&](const char* name) -> long {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "tritri-compare: %s needs a value\n", name);
-        std::exit(2);
-      }
-      char* end = nullptr;
-      const long n = std::strtol(argv[++i], &end, 10);
-      if (*end != '\0' || n < 0 || n > 1000000) {
-        std::fprintf(stderr, "tritri-compare: %s needs a non-negative integer, got '%s'\n", name, argv[i]);
-        std::exit(2);
-      }
-      return n;
+    auto number = [&](const std::string& name, long long lo, long long hi) -> long long {
+      if (!given.insert(name).second) usage_error(name + " given twice");
+      if (i + 1 >= argc) usage_error(name + " needs a value");
+      if (std::string_view(argv[i + 1]).starts_with("--"))  // e.g. `--threads --stats`; write ./--x for such a file
+        usage_error(name + " needs a value, got the option '" + argv[i + 1] + "'");
+      const std::string v = argv[++i];
+      const auto n = parse_count(v, lo, hi);
+      if (!n) usage_error(name + " needs an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                          ", got '" + v + "'");
+      return *n;
     };
     if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
@@ -122,26 +134,20 @@ int main(int argc, char** argv) {
     } else if (a == "--inject-disagreement") {
       inject = true;
     } else if (a == "--threads") {
-      threads = static_cast<int>(number("--threads"));
+      threads = static_cast<int>(number("--threads", 0, kMaxThreads));
     } else if (a == "--repeat") {
-      repeat = static_cast<int>(number("--repeat"));
-      if (repeat < 1) {
-        std::fprintf(stderr, "tritri-compare: --repeat needs a positive integer\n");
-        return 2;
-      }
+      repeat = static_cast<int>(number("--repeat", 1, kMaxRepeat));
     } else if (a == "--max-differences") {
-      max_differences = static_cast<std::size_t>(number("--max-differences"));
+      max_differences = static_cast<std::size_t>(number("--max-differences", 0, kMaxDifferences));
     } else if (a.size() > 1 && a[0] == '-') {
-      std::fprintf(stderr, "tritri-compare: unknown option '%s' (see --help)\n", a.c_str());
-      return 2;
+      usage_error("unknown option '" + a + "'");
+    } else if (a.empty()) {
+      usage_error("an input file name is empty");
     } else {
       inputs.push_back(a);
     }
   }
-  if (inputs.empty()) {
-    std::fprintf(stderr, "tritri-compare: no input file (see --help)\n");
-    return 2;
-  }
+  if (inputs.empty()) usage_error("no input file");
   std::string file;
   for (const auto& in : inputs) file += (file.empty() ? "" : " + ") + in;
 
