@@ -73,8 +73,9 @@ struct PlyElement {
   std::string name;
   unsigned long long count = 0;
   std::vector<PlyProperty> properties;
-  bool is_vertex() const { return name == "vertex" || name == "vertices"; }
-  bool is_face() const { return name == "face" || name == "faces"; }
+  bool vertex = false, face = false;  // the name is vertex / vertices, face / faces
+  bool is_vertex() const { return vertex; }
+  bool is_face() const { return face; }
 };
 
 enum class PlyFormat { ascii, binary_little_endian, binary_big_endian };
@@ -118,6 +119,8 @@ PlyHeader read_header(const std::string& path, LineReader& lines) {
       e.name = std::string(tokens.next());
       if (e.name.empty() || !parse_integer(tokens.next(), e.count))
         refuse_at_line(InputErrorKind::malformed, path, number, "expected 'element <name> <count>'");
+      e.vertex = e.name == "vertex" || e.name == "vertices";
+      e.face = e.name == "face" || e.name == "faces";
       h.elements.push_back(std::move(e));
     } else if (keyword == "property") {
       if (h.elements.empty()) refuse_at_line(InputErrorKind::malformed, path, number, "property before any element");
