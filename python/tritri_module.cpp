@@ -13,6 +13,8 @@
 #include <arrangements/arrange_eigen.h>
 #include <arrangements/input_error.h>
 #include <arrangements/load_triangle_soup.h>
+#include <arrangements/stats_json.h>
+#include <arrangements/thread_count.h>
 #include <tritri/classify.h>
 #include <tritri/double_kernel.h>
 #include <tritri/intersections.h>
@@ -112,41 +114,18 @@ arrangements::Classifier classifier_named(const std::string& name) {
   throw std::invalid_argument("tritri.arrange: unknown classifier '" + name + "' (use 'tritri' or 'native')");
 }
 
+// The keys and values of `arrange --stats` (stats_json.h: one list for both).
 nb::dict stats_dict(const arrangements::ArrangeStats& s) {
   nb::dict d;
-  d["in_vertices"] = s.in_vertices;
-  d["in_triangles"] = s.in_triangles;
-  d["merged_vertices"] = s.merged_vertices;
-  d["removed_degenerate"] = s.removed_degenerate;
-  d["removed_duplicate"] = s.removed_duplicate;
-  d["candidate_pairs"] = s.candidate_pairs;
-  d["intersecting_pairs"] = s.intersecting_pairs;
-  d["coplanar_pairs"] = s.coplanar_pairs;
-  d["intersection_points"] = s.intersection_points;
-  d["segments"] = s.segments;
-  d["tri_segments"] = s.tri_segments;
-  d["tpi"] = s.tpi;
-  d["out_vertices"] = s.out_vertices;
-  d["out_edges"] = s.out_edges;
-  d["out_triangles"] = s.out_triangles;
-  d["euler"] = s.euler;
-  d["orient3d_calls"] = s.orient3d_calls;
-  d["orient2d_calls"] = s.orient2d_calls;
-  d["threads"] = s.threads;
-  d["classifier"] = s.classifier;
-  d["t_load_s"] = s.t_load_s;
-  d["t_preprocess_s"] = s.t_preprocess_s;
-  d["t_detect_s"] = s.t_detect_s;
-  d["t_classify_s"] = s.t_classify_s;
-  d["t_triangulate_s"] = s.t_triangulate_s;
-  d["t_output_s"] = s.t_output_s;
-  d["t_total_s"] = s.t_total_s;
-  d["peak_rss_mb"] = s.peak_rss_mb;
+  arrangements::for_each_stat(s, [&d](const char* key, const auto& value, int) { d[key] = value; });
   return d;
 }
 
 nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels, const std::string& classifier,
                  int threads) {
+  if (!arrangements::valid_thread_count(threads))
+    throw std::invalid_argument("tritri.arrange: threads must be an integer from 0 to " +
+                                std::to_string(arrangements::kMaxThreads) + ", got " + std::to_string(threads));
   arrangements::ArrangeOptions options;
   options.classifier = classifier_named(classifier);
   options.threads = threads;
@@ -216,8 +195,10 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
 }
 
 // A mesh file as plain arrays (the pipeline's loader: OBJ, OFF, STL, PLY; polygons
-// fan-triangulated; vertices unmerged). Bad files raise ValueError (InputError).
+// triangulated by the loader; vertices unmerged). Bad files raise ValueError (InputError).
 nb::dict load_mesh(const std::string& path) {
+  if (path.find('\0') != std::string::npos)  // the loader would open the path up to it
+    throw std::invalid_argument("tritri.load_mesh: the path contains a NUL character");
   arrangements::TriangleSoup soup;
   {
     nb::gil_scoped_release release;
@@ -279,6 +260,7 @@ NB_MODULE(_tritri, m) {
         return s.str();
       });
 
+  m.attr("MAX_THREADS") = arrangements::kMaxThreads;
   m.def("classify", &classify, nb::arg("a"), nb::arg("b"));
   m.def("self_intersections", &self_intersections, nb::arg("V"), nb::arg("F"));
   m.def("intersections", &intersections, nb::arg("V1"), nb::arg("F1"), nb::arg("V2"), nb::arg("F2"));

@@ -12,33 +12,112 @@ Functions (every decision is an exact predicate on the input doubles, no toleran
     self_intersections(V, F)           -> (pairs, results)
     intersections(V1, F1, V2, F2)      -> (pairs, results)
     arrange(V, F, labels=None, classifier="tritri", threads=0) -> dict
+    load_mesh(path)                    -> dict (V, F)
 
-Arguments are anything numpy.asarray accepts: V as n x 3 coordinates (converted to
-float64), F as m x 3 integer vertex indices (any integer dtype). Refused input (wrong
-shape, NaN or infinite coordinates, an index out of range, an unknown classifier, a mesh
-the pipeline cannot arrange) raises ValueError with a message naming the argument and the
-entry. The C++ work runs without the GIL.
+Arguments are anything numpy.asarray accepts: V as n x 3 real coordinates (any integer or
+floating dtype, or Python numbers; converted to float64), F as m x 3 integer vertex indices
+(any integer dtype). Non-contiguous and Fortran-ordered arrays are fine (copied).
+
+Errors: every refused argument raises ValueError with a message naming the argument and
+the entry: wrong shape, NaN or infinite coordinates, a number beyond the float64 range
+(e.g. 10**400), an index or label out of range, an unknown classifier, threads outside
+0..MAX_THREADS, a mesh the pipeline cannot arrange, an unreadable mesh file. An argument
+of the wrong type (threads that is not an integer, a classifier that is not a str, a path
+that is not str / bytes / os.PathLike, arrays of bool, complex, str or other objects, F or
+labels that are not integers) raises ArgumentTypeError, which is both a TypeError (Python's
+convention) and a ValueError (so `except ValueError` catches every refused input).
+OverflowError and MemoryError are never raised for argument values; only a mesh too large
+for the machine's memory can raise MemoryError. The C++ work runs without the GIL.
+
+MAX_THREADS (1024): the largest thread count arrange accepts, the same as the command-line
+tools' --threads (arrangements/thread_count.h explains why there is a cap).
 """
+
+import numbers as _numbers
+import operator as _operator
+import os as _os
 
 import numpy as _np
 
-from ._tritri import Result
+from ._tritri import MAX_THREADS, Result
 from ._tritri import arrange as _arrange
 from ._tritri import classify as _classify
 from ._tritri import intersections as _intersections
 from ._tritri import load_mesh as _load_mesh
 from ._tritri import self_intersections as _self_intersections
 
-__all__ = ["Result", "classify", "self_intersections", "intersections", "arrange", "load_mesh"]
+__all__ = ["Result", "ArgumentTypeError", "MAX_THREADS", "classify", "self_intersections", "intersections",
+           "arrange", "load_mesh"]
 __version__ = "0.1.0"
 
 
-def _float_array(x, name, function):
+class ArgumentTypeError(TypeError, ValueError):
+    """An argument of the wrong type: both a TypeError and a ValueError."""
+
+
+def _describe(v):
+    """A short description of a value for a message (never fails, never huge)."""
+    if isinstance(v, int) and not isinstance(v, bool) and abs(v) >= 10**30:
+        return f"{'-' if v < 0 else ''}an integer of {v.bit_length()} bits"
     try:
-        a = _np.asarray(x, dtype=_np.float64)
-    except (TypeError, ValueError) as e:
-        raise ValueError(f"tritri.{function}: {name} is not an array of numbers ({e})") from None
-    return a
+        text = repr(v)
+    except Exception:  # e.g. a broken __repr__
+        text = f"a {type(v).__name__}"
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _is_integer(v):
+    return isinstance(v, _numbers.Integral) and not isinstance(v, (bool, _np.bool_))
+
+
+def _as_array(x, name, function, what):
+    try:
+        return _np.asarray(x)
+    except (TypeError, ValueError, OverflowError) as e:  # ragged lists, odd objects
+        raise ValueError(f"tritri.{function}: {name} is not an array of {what} ({e})") from None
+
+
+def _float_array(x, name, function):
+    """x as a float64 array: real numbers only (integers and floats of any width)."""
+    a = _as_array(x, name, function, "numbers")
+    if a.dtype.kind == "O":  # Python objects, e.g. integers beyond int64
+        out = _np.empty(a.shape, dtype=_np.float64)
+        for index, v in _np.ndenumerate(a):
+            if isinstance(v, (bool, _np.bool_)) or not isinstance(v, _numbers.Real):
+                raise ArgumentTypeError(f"tritri.{function}: {name}{list(index) if index else ''} is "
+                                        f"{_describe(v)}, not a real number")
+            try:
+                out[index] = float(v)
+            except (OverflowError, ValueError, TypeError):
+                raise ValueError(f"tritri.{function}: {name}{list(index) if index else ''} = {_describe(v)} "
+                                 "is beyond the float64 range") from None
+        return out
+    if a.dtype.kind not in "iuf":
+        raise ArgumentTypeError(f"tritri.{function}: {name} must hold real numbers, got dtype {a.dtype}")
+    with _np.errstate(over="ignore"):  # long double beyond float64: inf, refused as not finite
+        return a.astype(_np.float64, copy=False)
+
+
+def _int_array(x, name, function, what):
+    """x as an int64 array of integers (any integer dtype; Python ints within int64)."""
+    a = _as_array(x, name, function, what)
+    if a.size == 0:
+        return a.astype(_np.int64)
+    if a.dtype.kind == "f" and not isinstance(x, _np.ndarray):  # numpy makes [2**63] float64
+        o = _np.asarray(x, dtype=object)
+        if o.shape == a.shape and all(_is_integer(v) for v in o.flat):
+            a = o
+    if a.dtype.kind == "O" and all(_is_integer(v) for v in a.flat):
+        try:
+            return a.astype(_np.int64)
+        except OverflowError:
+            raise ValueError(f"tritri.{function}: {name} has a value out of range "
+                             f"(beyond int64: {_describe(max(a.flat, key=abs))})") from None
+    if a.dtype.kind not in "iu":
+        raise ArgumentTypeError(f"tritri.{function}: {name} must hold integer {what}, got dtype {a.dtype}")
+    if a.dtype.kind == "u" and a.max() > _np.iinfo(_np.int64).max:
+        raise ValueError(f"tritri.{function}: {name} has a value out of range ({a.max()})")
+    return a.astype(_np.int64, copy=False)
 
 
 def _vertices(x, name, function):
@@ -52,20 +131,27 @@ def _vertices(x, name, function):
 
 
 def _faces(x, name, function):
-    try:
-        a = _np.asarray(x)
-    except (TypeError, ValueError) as e:
-        raise ValueError(f"tritri.{function}: {name} is not an array of indices ({e})") from None
+    a = _int_array(x, name, function, "vertex indices")
     if a.size == 0:
         return _np.zeros((0, 3), dtype=_np.int64)
-    if a.dtype.kind not in "iu":
-        raise ValueError(f"tritri.{function}: {name} must hold integer vertex indices, got dtype {a.dtype}")
     if a.ndim != 2 or a.shape[1] != 3:
         raise ValueError(f"tritri.{function}: {name} must be an m x 3 array of vertex indices, "
                          f"got shape {a.shape}")
-    if a.dtype.kind == "u" and a.max() > _np.iinfo(_np.int64).max:
-        raise ValueError(f"tritri.{function}: {name} has an index out of range ({a.max()})")
-    return _np.ascontiguousarray(a, dtype=_np.int64)
+    return _np.ascontiguousarray(a)
+
+
+def _thread_count(threads):
+    try:
+        if isinstance(threads, (bool, _np.bool_)):
+            raise TypeError
+        n = _operator.index(threads)  # int, numpy integers; not bool, float, str, None
+    except TypeError:
+        raise ArgumentTypeError(f"tritri.arrange: threads must be an integer from 0 to {MAX_THREADS}, "
+                                f"got {_describe(threads)}") from None
+    if not 0 <= n <= MAX_THREADS:
+        raise ValueError(f"tritri.arrange: threads must be an integer from 0 to {MAX_THREADS}, "
+                         f"got {_describe(n)}")
+    return n
 
 
 def classify(a, b):
@@ -81,6 +167,8 @@ def classify(a, b):
       coplanar   the triangles lie in one plane
       degenerate a triangle has repeated or collinear vertices and was not classified
       intersects at least one point
+    Raises ValueError for a shape other than 3 x 3 or a coordinate that is NaN, infinite or
+    beyond the float64 range; ArgumentTypeError for non-numbers (bool, complex, str, ...).
     """
     ta, tb = _float_array(a, "a", "classify"), _float_array(b, "b", "classify")
     for t, name in ((ta, "a"), (tb, "b")):
@@ -122,8 +210,9 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0):
     """The mesh arrangement: cuts the triangles along all their intersections, exactly.
 
     V: n x 3 coordinates; F: m x 3 vertex indices (m >= 1); labels: None (all 0) or m
-    integer labels >= 0 (e.g. which input mesh a triangle came from); classifier:
-    "tritri" or "native"; threads: worker threads (<= 0: all cores).
+    integer labels from 0 to 2**31 - 1 (e.g. which input mesh a triangle came from);
+    classifier: "tritri" or "native"; threads: worker threads, an integer from 0 (all
+    cores, the default) to MAX_THREADS (1024), as `arrange --threads`.
     Returns a dict:
       V           #V x 3 float64: output vertices rounded to the nearest double
       V_is_exact  #V bool: the rounded vertex is the exact one (input vertices always)
@@ -132,44 +221,52 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0):
                   differ where V_is_exact is False)
       source      #F int64: the row of the input F each output triangle lies in
       labels      #F tuples: the sorted labels of the input triangles covering each one
-      stats       dict of the pipeline's counts and stage times (ArrangeStats)
+      stats       dict of the pipeline's counts and stage times: exactly the keys and
+                  values of `arrange --stats` (in_vertices, ..., lpi, tpi, out_vertices,
+                  ..., threads, t_*_s, peak_rss_mb; see `arrange --help`); t_load_s is 0
+                  here, nothing is read from a file
+    Raises ValueError for refused input (see the module's documentation): a threads value
+    outside 0..MAX_THREADS, an unknown classifier, an index or label out of range, NaN or
+    infinite coordinates, nothing left to arrange; ArgumentTypeError (also a ValueError)
+    for threads that is not an integer (bool, float, str, None), a classifier that is not
+    a str, or arrays of the wrong dtype.
     """
     f = "arrange"
     if not isinstance(classifier, str):
-        raise ValueError(f"tritri.arrange: classifier must be 'tritri' or 'native', got {classifier!r}")
-    try:
-        threads = int(threads)
-    except (TypeError, ValueError):
-        raise ValueError(f"tritri.arrange: threads must be an integer, got {threads!r}") from None
-    if not -2**31 <= threads < 2**31:
-        raise ValueError(f"tritri.arrange: threads out of range ({threads})")
+        raise ArgumentTypeError(f"tritri.arrange: classifier must be 'tritri' or 'native', "
+                                f"got {_describe(classifier)}")
+    threads = _thread_count(threads)
     Fa = _faces(F, "F", f)
     la = None
     if labels is not None:
-        try:
-            la = _np.asarray(labels)
-        except (TypeError, ValueError) as e:
-            raise ValueError(f"tritri.arrange: labels is not an array of integers ({e})") from None
+        la = _int_array(labels, "labels", f, "labels")
         if la.size == 0:
-            la = la.reshape(0).astype(_np.int64)
-        if la.dtype.kind not in "iu" or la.ndim != 1:
+            la = la.reshape(0)
+        if la.ndim != 1:
             raise ValueError(f"tritri.arrange: labels must be a 1-d integer array (one per row of F), "
-                             f"got dtype {la.dtype} shape {la.shape}")
+                             f"got shape {la.shape}")
         if la.shape[0] != Fa.shape[0]:
             raise ValueError(f"tritri.arrange: labels must have one entry per row of F ({Fa.shape[0]}), "
                              f"got {la.shape[0]}")
-        if la.size and la.dtype.kind == "u" and la.max() > _np.iinfo(_np.int64).max:
-            raise ValueError(f"tritri.arrange: labels has a value out of range ({la.max()})")
-        la = _np.ascontiguousarray(la, dtype=_np.int64)
+        la = _np.ascontiguousarray(la)
     return _arrange(_vertices(V, "V", f), Fa, la, classifier, threads)
 
 
 def load_mesh(path):
     """Reads a mesh file with the pipeline's loader (the same one `arrange` uses).
 
-    path: an .obj, .off, .stl or .ply file (ASCII or binary). Polygons are fan-triangulated
-    from their first corner; vertices are not merged (arrange merges them exactly).
+    path: an .obj, .off, .stl or .ply file (ASCII or binary). Polygons are triangulated as
+    by the loader (in their plane when simple, else the fan from the first corner);
+    vertices are not merged (arrange merges them exactly).
     Returns a dict with V (n x 3 float64) and F (m x 3 int64). A missing, unreadable or
-    malformed file, NaN/Inf coordinates or out-of-range indices raise ValueError.
+    malformed file, NaN/Inf coordinates or out-of-range indices raise ValueError; a path
+    that is not str, bytes or os.PathLike raises ArgumentTypeError.
     """
-    return _load_mesh(str(path))
+    try:
+        path = _os.fsdecode(path)  # str, bytes or os.PathLike
+    except TypeError:
+        raise ArgumentTypeError(f"tritri.load_mesh: path must be a str, bytes or os.PathLike, "
+                                f"got {_describe(path)}") from None
+    if "\0" in path:
+        raise ValueError("tritri.load_mesh: the path contains a NUL character")
+    return _load_mesh(path)

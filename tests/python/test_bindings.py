@@ -8,12 +8,22 @@
   left intersecting in the exactly representable output, provenance and labels), two
   overlapping coplanar squares (label sets and areas by hand), spheres (pairs left in the
   rounded output only involve rounded vertices);
-- every refused input raises ValueError.
+- every refused input raises ValueError (wrong types: ArgumentTypeError, also a TypeError),
+  table-driven over every argument of every function with hostile values (huge integers,
+  NaN/Inf, wrong shapes and dtypes, out-of-range indices and labels, every kind of bad
+  thread count), never OverflowError, MemoryError or a crash;
+- the stats dict has exactly the keys of `arrange --stats` (the CLI is run when built:
+  $TRITRI_ARRANGE_BIN, default build/bin/arrange).
 Run: scripts/test_python.sh (installs the package with pip, then runs pytest).
 """
 
+import fractions
 import itertools
+import json
 import math
+import os
+import pathlib
+import subprocess
 
 import numpy as np
 import pytest
@@ -314,8 +324,6 @@ BAD_CALLS = {
     "arrange classifier type": lambda: tritri.arrange(V3, F1, classifier=1),
     "arrange threads": lambda: tritri.arrange(V3, F1, threads="two"),
     "arrange threads huge": lambda: tritri.arrange(V3, F1, threads=2**40),
-    "arrange no faces": lambda: tritri.arrange(V3, np.zeros((0, 3), dtype=int)),
-    "arrange only degenerate": lambda: tritri.arrange(np.zeros((3, 3)), F1),
     "arrange V NaN": lambda: tritri.arrange(with_value(V3, (2, 1), np.nan), F1),
     "arrange V shape": lambda: tritri.arrange(np.zeros((3, 2)), F1),
     "arrange F range": lambda: tritri.arrange(V3, [[0, 1, 3]]),
@@ -348,14 +356,177 @@ def test_bad_input_messages_name_the_argument_and_entry():
 
 
 def test_load_mesh_reads_what_was_written_and_refuses_bad_files(tmp_path):
-    # A quad written by hand: fan-triangulated from its first corner.
+    # A quad written by hand: two triangles over its corners, tiling it (twice-area 2) with
+    # its orientation (+z).
     p = tmp_path / "quad.off"
     p.write_text("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
     m = tritri.load_mesh(p)
     np.testing.assert_array_equal(m["V"], [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]])
-    np.testing.assert_array_equal(m["F"], [[0, 1, 2], [0, 2, 3]])
+    F = m["F"]
+    assert F.shape == (2, 3) and set(F.ravel()) == {0, 1, 2, 3}
+    n = np.cross(m["V"][F[:, 1]] - m["V"][F[:, 0]], m["V"][F[:, 2]] - m["V"][F[:, 0]])
+    assert (n[:, 2] == 1).all()
+    assert tritri.load_mesh(str(p).encode())["F"].tolist() == F.tolist()  # bytes paths too
     bad = tmp_path / "bad.off"
     bad.write_text("OFF\n3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n")
     for path in (bad, tmp_path / "missing.obj", tmp_path / "x.xyz"):
         with pytest.raises(ValueError):
             tritri.load_mesh(path)
+
+
+def test_nothing_to_arrange_gives_an_empty_mesh():
+    for V, F in ((V3, np.zeros((0, 3), dtype=int)), (np.zeros((3, 3)), F1)):
+        out = tritri.arrange(V, F)
+        assert out["V"].shape == (0, 3) and out["F"].shape == (0, 3) and out["labels"] == []
+        assert out["stats"]["out_triangles"] == 0
+
+
+# --- hostile arguments: ValueError (wrong types: ArgumentTypeError), nothing else ----------
+
+HUGE_INTS = [2**31 - 1, 2**31, 2**63 - 1, 2**63, 2**64, 10**30, 10**400, -2**63, -2**64, -10**400]
+THREADS_VALUE = [-1, -2**31, tritri.MAX_THREADS + 1, 4096, 65536, 100000] + HUGE_INTS + [np.int64(2**40)]
+THREADS_TYPE = [1.0, 1.5, float("nan"), float("inf"), -float("inf"), "4", "", " 5", "+5", "0x10", None, True,
+                False, np.float64(2), np.bool_(True), 2j, [1], b"4"]
+A_TYPE = [np.eye(3) * (1 + 1j), np.eye(3, dtype=bool), [["1", "0", "0"]] * 3, [[None] * 3] * 3,
+          np.array([[b"x"] * 3] * 3), np.full((3, 3), np.datetime64("2020-01-01")), [[1, 2, "3"]] * 3, "abc"]
+A_VALUE = [with_value(T, (0, 0), v) for v in (np.nan, np.inf, -np.inf)] + [
+    [[10**400, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 0, 0], [1, 0, 0], [0, -2**1024, 0]],
+    np.array([[fractions.Fraction(10**400), 0, 0], [1, 0, 0], [0, 1, 0]], dtype=object),
+    np.zeros((3, 3, 1)), np.zeros(9), 5, [[0, 0, 0], [1, 0]]]
+A_EMPTY = [[], np.zeros((0,)), np.zeros((0, 3))]  # refused by classify; an empty mesh elsewhere
+F_TYPE = [[[0.0, 1.0, 2.0]], [[True, False, True]], [[0, 1, 2j]], [["0", "1", "2"]], [[0, 1, None]],
+          np.array([[0, 1, 2]], dtype=object).astype(float)]
+F_VALUE = [[[0, 1, v]] for v in HUGE_INTS + [3, -1]] + [np.array([[0, 1, 2**63]], dtype=np.uint64),
+                                                        [[0, 1]], [[0, 1, 2, 0]], [0, 1, 2], [[[0, 1, 2]]],
+                                                        [[0, 1, 2], [0, 1]]]
+LABELS_TYPE = [[0.5], [True], [1j], ["0"], [None]]
+LABELS_VALUE = [[v] for v in HUGE_INTS[1:] + [-1]] + [np.array([2**63], dtype=np.uint64), [0, 1], [[0]], [],
+                                                   [[0], [1, 2]]]
+PATH_TYPE = [None, 5, 1.5, ["a.off"], object()]
+
+
+def hostile_calls():
+    """(name, call, kind): kind 'type' expects ArgumentTypeError, 'value' a plain ValueError."""
+    cases = []
+
+    def add(name, values, kind, call):
+        for i, v in enumerate(values):
+            cases.append(pytest.param(lambda v=v: call(v), kind, id=f"{name}-{i}-{kind}"))
+
+    add("classify a", A_TYPE, "type", lambda v: tritri.classify(v, T))
+    add("classify a", A_VALUE + A_EMPTY, "value", lambda v: tritri.classify(v, T))
+    add("classify b", A_TYPE, "type", lambda v: tritri.classify(T, v))
+    add("classify b", A_VALUE, "value", lambda v: tritri.classify(T, v))
+    vertices_value = A_VALUE + [[[0, 0, 0]] * 2]  # two vertices, F1 needs three
+    add("self V", A_TYPE, "type", lambda v: tritri.self_intersections(v, F1))
+    add("self V", vertices_value, "value", lambda v: tritri.self_intersections(v, F1))
+    add("self F", F_TYPE, "type", lambda v: tritri.self_intersections(V3, v))
+    add("self F", F_VALUE, "value", lambda v: tritri.self_intersections(V3, v))
+    add("two V2", A_TYPE, "type", lambda v: tritri.intersections(V3, F1, v, F1))
+    add("two V1", vertices_value, "value", lambda v: tritri.intersections(v, F1, V3, F1))
+    add("two F1", F_TYPE, "type", lambda v: tritri.intersections(V3, v, V3, F1))
+    add("two F2", F_VALUE, "value", lambda v: tritri.intersections(V3, F1, V3, v))
+    add("arrange V", A_TYPE, "type", lambda v: tritri.arrange(v, F1))
+    add("arrange V", vertices_value, "value", lambda v: tritri.arrange(v, F1))
+    add("arrange F", F_TYPE, "type", lambda v: tritri.arrange(V3, v))
+    add("arrange F", F_VALUE, "value", lambda v: tritri.arrange(V3, v))
+    add("arrange labels", LABELS_TYPE, "type", lambda v: tritri.arrange(V3, F1, labels=v))
+    add("arrange labels", LABELS_VALUE, "value", lambda v: tritri.arrange(V3, F1, labels=v))
+    add("arrange threads", THREADS_TYPE, "type", lambda v: tritri.arrange(V3, F1, threads=v))
+    add("arrange threads", THREADS_VALUE, "value", lambda v: tritri.arrange(V3, F1, threads=v))
+    add("arrange classifier", [None, 1, b"tritri", ["tritri"]], "type",
+        lambda v: tritri.arrange(V3, F1, classifier=v))
+    add("arrange classifier", ["", "TRITRI", " tritri", "tritri\0", "fast"], "value",
+        lambda v: tritri.arrange(V3, F1, classifier=v))
+    add("load_mesh", PATH_TYPE, "type", tritri.load_mesh)
+    add("load_mesh", ["", "/", "x.off\0", b"x.off\0", "/nonexistent/x.off", "noextension"], "value",
+        tritri.load_mesh)
+    return cases
+
+
+@pytest.mark.parametrize("call, kind", hostile_calls())
+def test_hostile_arguments_raise_value_error(call, kind):
+    with pytest.raises(ValueError) as e:
+        call()
+    assert str(e.value)  # a message
+    if kind == "type":
+        assert type(e.value) is tritri.ArgumentTypeError and isinstance(e.value, TypeError), repr(e.value)
+    else:
+        assert not isinstance(e.value, TypeError), repr(e.value)
+
+
+def test_the_thread_cap_is_documented_and_accepted():
+    assert tritri.MAX_THREADS == 1024 and "MAX_THREADS" in tritri.__all__
+    assert str(tritri.MAX_THREADS) in tritri.arrange.__doc__ and "ArgumentTypeError" in tritri.arrange.__doc__
+    assert issubclass(tritri.ArgumentTypeError, TypeError) and issubclass(tritri.ArgumentTypeError, ValueError)
+    V, F, _ = join(cube((0, 0, 0), (2, 2, 2)), cube((1, 1, 1), (3, 3, 3)))
+    one = tritri.arrange(V, F, threads=1)
+    for t in (0, np.int32(2), np.uint64(3), tritri.MAX_THREADS):
+        out = tritri.arrange(V, F, threads=t)
+        assert out["F"].tolist() == one["F"].tolist()
+        if t:
+            assert out["stats"]["threads"] == int(t)
+    with pytest.raises(ValueError, match=r"threads must be an integer from 0 to 1024, got 1025"):
+        tritri.arrange(V, F, threads=1025)
+    from tritri import _tritri  # the extension checks too, for callers that bypass the wrapper
+    with pytest.raises(ValueError, match="threads must be an integer from 0 to 1024"):
+        _tritri.arrange(V, F, None, "tritri", 100000)
+
+
+def test_unusual_but_valid_arrays_give_the_same_answers():
+    V, F, labels = join(cube((0, 0, 0), (2, 2, 2)), cube((1, 1, 1), (3, 3, 3)))
+    expected = tritri.arrange(V, F, labels=labels)
+    wide = np.zeros((len(V), 6))
+    wide[:, ::2] = V
+    variants = [
+        (wide[:, ::2], F, labels),                                   # non-contiguous V
+        (np.asfortranarray(V), np.asfortranarray(F), labels),        # Fortran order
+        (V[::-1][::-1], F[::-1][::-1], labels[::-1][::-1]),          # negative strides
+        (V.astype(np.float32), F.astype(np.uint8), labels.astype(np.int8)),
+        (V.astype(np.int16), F.astype(np.int32), labels.astype(np.uint16)),
+        (V.astype(object), F.astype(object), list(labels)),           # Python numbers
+        (V.tolist(), F.tolist(), labels.tolist()),
+        (np.array([[fractions.Fraction(int(x)) for x in row] for row in V], dtype=object), F, labels),
+    ]
+    for Vv, Fv, lv in variants:
+        out = tritri.arrange(Vv, Fv, labels=lv)
+        assert out["F"].tolist() == expected["F"].tolist() and out["labels"] == expected["labels"]
+        assert tritri.self_intersections(Vv, Fv)[0].tolist() == tritri.self_intersections(V, F)[0].tolist()
+    assert tritri.arrange(V3, F1, labels=[2**31 - 1])["labels"] == [(2**31 - 1,)]  # the largest label
+    r = tritri.classify(np.asfortranarray(T)[:, ::-1][:, ::-1], T.astype(np.float32))
+    assert r == tritri.classify(T, T)
+    for empty in ([], np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int8)):
+        assert tritri.self_intersections(empty, np.zeros((0, 3), dtype=int))[0].shape == (0, 2)
+        assert tritri.intersections(V3, F1, empty, [])[0].shape == (0, 2)
+
+
+def test_extreme_finite_coordinates_are_arranged():
+    for s in (1e300, 2.0**-1000, 5e-324):
+        V, F, labels = join(cube((0, 0, 0), (2 * s, 2 * s, 2 * s)), cube((s, s, s), (3 * s, 3 * s, 3 * s)))
+        out = tritri.arrange(V, F, labels=labels)
+        assert out["stats"]["euler"] == 4 and np.isfinite(out["V"]).all()
+
+
+def test_stats_keys_are_those_of_the_cli(tmp_path):
+    """The Python stats dict and `arrange --stats` have the same keys, in the same order, and
+    the same counts on the same mesh (t_load_s is 0 in Python: nothing is read)."""
+    repo = pathlib.Path(__file__).resolve().parents[2]
+    cli = os.environ.get("TRITRI_ARRANGE_BIN", str(repo / "build" / "bin" / "arrange"))
+    if not os.access(cli, os.X_OK):
+        pytest.skip(f"no arrange binary at {cli} (set TRITRI_ARRANGE_BIN)")
+    V, F, _ = join(cube((0, 0, 0), (2, 2, 2)), cube((1, 1, 1), (3, 3, 3)))
+    mesh = tmp_path / "cubes.off"
+    mesh.write_text(f"OFF\n{len(V)} {len(F)} 0\n" + "".join(f"{x:.17g} {y:.17g} {z:.17g}\n" for x, y, z in V)
+                    + "".join(f"3 {a} {b} {c}\n" for a, b, c in F))
+    run = subprocess.run([cli, str(mesh), "--stats", "--threads", "1"], capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    from_cli = json.loads(run.stdout)
+    from_python = tritri.arrange(V, F, threads=1)["stats"]
+    assert list(from_python) == list(from_cli)
+    assert from_python["lpi"] == from_python["intersection_points"] > 0
+    for key, value in from_cli.items():
+        if not key.startswith("t_") and key != "peak_rss_mb":
+            assert from_python[key] == value, key
+    assert from_python["t_load_s"] == 0
+    over = subprocess.run([cli, str(mesh), "--threads", str(tritri.MAX_THREADS + 1)], capture_output=True, text=True)
+    assert over.returncode == 2 and str(tritri.MAX_THREADS) in over.stderr
