@@ -35,8 +35,8 @@ def polygon(kind, n):
     if kind == "regular":
         return [(math.cos(2 * math.pi * i / n), math.sin(2 * math.pi * i / n)) for i in range(n)]
     if kind == "star":
-        return [((0.5 + rng.random()) * math.cos(2 * math.pi * i / n),
-                 (0.5 + rng.random()) * math.sin(2 * math.pi * i / n)) for i in range(n)]
+        radii = [0.5 + rng.random() for _ in range(n)]  # star-shaped around the origin: simple
+        return [(r * math.cos(2 * math.pi * i / n), r * math.sin(2 * math.pi * i / n)) for i, r in enumerate(radii)]
     # comb: teeth along the x axis, a straight back at y = -1
     teeth = max(1, (n - 2) // 2)
     top = []
@@ -68,9 +68,10 @@ def main():
     ap.add_argument("--corners", type=positive_int, default=30000)
     ap.add_argument("--runs", type=positive_int, default=3)
     ap.add_argument("--json", action="store_true", help="one JSON object per workload")
+    ap.add_argument("--kinds", nargs="+", choices=("regular", "star", "comb"), default=("regular", "star", "comb"))
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
-        for kind in ("regular", "star", "comb"):
+        for kind in args.kinds:
             path = os.path.join(tmp, f"{kind}.off")
             pts = polygon(kind, args.corners)
             write_off(path, pts)

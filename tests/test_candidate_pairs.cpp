@@ -149,6 +149,30 @@ TEST(CandidatePairs, EqualsBruteForceOnGeneratedSoupsForEveryThreadCount) {
   }
 }
 
+// Polygon faces (TriangleSoup::polygon): the same pairs minus those inside one face, for
+// faces of every size (singletons, small, most of the soup) and any thread count.
+TEST(CandidatePairs, WithPolygonFacesEqualsBruteForceMinusPairsInsideOneFace) {
+  std::mt19937 rng(4242);
+  std::vector<Vec3> V;
+  std::vector<Tri> F;
+  for (int trial = 0; trial < 12; ++trial) {
+    const int n = 100 + trial * 150;
+    trial % 2 ? grid_soup(rng, n, 1, 2 + trial % 4, V, F) : needle_soup(rng, n, V, F);
+    std::vector<std::int64_t> polygon(F.size(), -1);
+    const int max_face = trial < 4 ? 3 : trial < 8 ? 40 : n;
+    std::uniform_int_distribution<int> size(1, max_face), coin(0, 2);
+    for (std::size_t t = 0; t < F.size();) {  // runs of consecutive triangles, some left single
+      const std::size_t end = std::min(F.size(), t + size(rng));
+      if (coin(rng)) std::fill(polygon.begin() + t, polygon.begin() + end, static_cast<std::int64_t>(t));
+      t = end;
+    }
+    Pairs expected;
+    for (const auto& [i, j] : brute_force_pairs(V, F))
+      if (polygon[i] < 0 || polygon[i] != polygon[j]) expected.emplace_back(i, j);
+    for (int threads : {1, 2, 0}) ASSERT_EQ(candidate_pairs(V, F, threads, polygon), expected) << trial << " " << threads;
+  }
+}
+
 TEST(CandidatePairs, EqualsBruteForceOnRealMeshes) {
   // box.STL: axis-aligned faces whose flat boxes only touch, on the parallel path.
   for (const char* name : {"cherchi_arrangements/two_spheres.stl", "libigl_tutorial/bunny.off", "trimesh/box.STL"}) {

@@ -81,7 +81,7 @@ ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) 
   s.t_preprocess_s = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  const auto pairs = candidate_pairs(soup.vertices, soup.triangles, workers);
+  const auto pairs = candidate_pairs(soup.vertices, soup.triangles, workers, soup.polygon);
   s.candidate_pairs = pairs.size();
   s.t_detect_s = seconds_since(t0);
 

@@ -10,7 +10,10 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -99,15 +102,83 @@ Pairs overlapping_pairs(std::vector<Box>& boxes, int workers) {
   return all;
 }
 
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+using RPoint = bg::model::point<double, 3, bg::cs::cartesian>;
+using RBox = bg::model::box<RPoint>;
+using RTree = bgi::rtree<std::pair<RBox, int>, bgi::quadratic<16>>;
+
+RBox rbox(const Box& b) {
+  return {RPoint(b.min_coord(0), b.min_coord(1), b.min_coord(2)), RPoint(b.max_coord(0), b.max_coord(1), b.max_coord(2))};
+}
+
+// With polygon faces: a face's triangles never pair with each other, and a big face can
+// give up to n^2 / 2 overlapping boxes (its triangles may all share a corner), so they are
+// never enumerated. Each face is one box (the union of its triangles') in the box search,
+// beside the other triangles; a pair of items that involves a face is expanded by querying
+// the face's R-tree of triangle boxes (closed boxes: touching counts, as above) with the
+// other item's triangle boxes.
+Pairs overlapping_pairs_with_faces(const std::vector<Box>& boxes, std::span<const std::int64_t> polygon, int workers) {
+  std::map<std::int64_t, std::vector<int>> faces_by_id;  // deterministic face order
+  std::vector<std::vector<int>> items;                   // triangles of each item
+  for (std::size_t t = 0; t < boxes.size(); ++t) {
+    if (polygon[t] >= 0)
+      faces_by_id[polygon[t]].push_back(static_cast<int>(t));
+    else
+      items.push_back({static_cast<int>(t)});
+  }
+  for (auto& [id, triangles] : faces_by_id) items.push_back(std::move(triangles));
+  std::vector<Box> item_boxes;
+  item_boxes.reserve(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    CGAL::Bbox_3 b = boxes[items[i][0]].bbox();
+    for (int t : items[i]) b += boxes[t].bbox();
+    item_boxes.emplace_back(b, static_cast<int>(i));
+  }
+  std::vector<RTree> trees(items.size());
+  tbb::parallel_for(std::size_t(0), items.size(), [&](std::size_t i) {
+    if (items[i].size() < 2) return;
+    std::vector<std::pair<RBox, int>> values;
+    values.reserve(items[i].size());
+    for (int t : items[i]) values.emplace_back(rbox(boxes[t]), t);
+    trees[i] = RTree(values.begin(), values.end());  // bulk loading (packing)
+  });
+  const Pairs item_pairs = overlapping_pairs(item_boxes, workers);
+  tbb::enumerable_thread_specific<Pairs> found;
+  tbb::parallel_for(std::size_t(0), item_pairs.size(), [&](std::size_t k) {
+    int a = item_pairs[k].first, b = item_pairs[k].second;
+    if (items[a].size() > items[b].size()) std::swap(a, b);  // query the larger one
+    Pairs& out = found.local();
+    if (items[b].size() == 1) {
+      out.emplace_back(std::min(items[a][0], items[b][0]), std::max(items[a][0], items[b][0]));
+      return;
+    }
+    for (int t : items[a])
+      for (auto it = trees[b].qbegin(bgi::intersects(rbox(boxes[t]))); it != trees[b].qend(); ++it)
+        out.emplace_back(std::min(t, it->second), std::max(t, it->second));
+  });
+  Pairs all;
+  for (const Pairs& p : found) all.insert(all.end(), p.begin(), p.end());
+  tbb::parallel_sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  return all;
+}
+
 }  // namespace
 
 std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                                                 int threads) {
+                                                 int threads, std::span<const std::int64_t> polygon) {
+  if (!polygon.empty() && polygon.size() != F.size())
+    throw std::invalid_argument("candidate_pairs: polygon must be empty or have one entry per triangle");
   std::vector<Box> boxes = triangle_boxes(V, F);
   if (boxes.size() < 2) return {};
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   Pairs pairs;
-  arena.execute([&] { pairs = overlapping_pairs(boxes, arena.max_concurrency()); });
+  const bool faces = std::any_of(polygon.begin(), polygon.end(), [](std::int64_t id) { return id >= 0; });
+  arena.execute([&] {
+    pairs = faces ? overlapping_pairs_with_faces(boxes, polygon, arena.max_concurrency())
+                  : overlapping_pairs(boxes, arena.max_concurrency());
+  });
   return pairs;
 }
 

@@ -88,11 +88,17 @@ void SoupBuilder::finish() {
     const std::size_t begin = polygon_start_[k];
     const std::size_t end = k + 1 < polygon_start_.size() ? polygon_start_[k + 1] : polygon_corners_.size();
     polygon.clear();
-    triangulate_polygon(vertices, std::span<const int>(polygon_corners_.data() + begin, end - begin), polygon);
+    const bool certified =
+        triangulate_polygon(vertices, std::span<const int>(polygon_corners_.data() + begin, end - begin), polygon);
     if (polygon.size() != end - begin - 2)
       throw std::logic_error("triangulate_polygon returned " + std::to_string(polygon.size()) + " triangles for " +
                              std::to_string(end - begin) + " corners");
-    std::copy(polygon.begin(), polygon.end(), triangles.begin() + static_cast<std::ptrdiff_t>(polygon_triangle_[k]));
+    const auto first = static_cast<std::ptrdiff_t>(polygon_triangle_[k]);
+    std::copy(polygon.begin(), polygon.end(), triangles.begin() + first);
+    if (certified) {  // its triangles cannot meet improperly: one id, no candidate pairs
+      if (this->polygon.empty()) this->polygon.assign(triangles.size(), -1);
+      std::fill_n(this->polygon.begin() + first, polygon.size(), static_cast<std::int64_t>(first));
+    }
   }
   std::vector<int>().swap(polygon_corners_);
   std::vector<std::size_t>().swap(polygon_start_);
@@ -142,6 +148,7 @@ TriangleSoup load_triangle_soup(const std::string& path, std::uint32_t label) {
   soup.label_sets = {LabelSet{label}};
   soup.source.resize(soup.triangles.size());
   for (std::size_t t = 0; t < soup.source.size(); ++t) soup.source[t] = static_cast<std::int64_t>(t);
+  soup.polygon = std::move(builder.polygon);
   return soup;
 }
 
@@ -161,6 +168,11 @@ TriangleSoup load_triangle_soups(const std::vector<std::string>& paths) {
     const int offset = static_cast<int>(all.vertices.size());
     const std::int64_t source_offset = static_cast<std::int64_t>(all.triangles.size());
     all.vertices.insert(all.vertices.end(), one.vertices.begin(), one.vertices.end());
+    if (!one.polygon.empty() || !all.polygon.empty()) {  // ids are source indices: offset them too
+      all.polygon.resize(all.triangles.size(), -1);
+      for (std::size_t t = 0; t < one.triangles.size(); ++t)
+        all.polygon.push_back(one.polygon.empty() || one.polygon[t] < 0 ? -1 : source_offset + one.polygon[t]);
+    }
     for (std::size_t t = 0; t < one.triangles.size(); ++t) {
       const Tri& tri = one.triangles[t];
       all.triangles.push_back({tri[0] + offset, tri[1] + offset, tri[2] + offset});

@@ -149,6 +149,8 @@ class SoupBuilder {
   // Triangles in file order; a polygon of n corners holds n - 2 slots here, filled by
   // finish().
   std::vector<Tri> triangles;
+  // After finish(): TriangleSoup::polygon (empty when no polygon was split without overlap).
+  std::vector<std::int64_t> polygon;
 
   void add_vertex(const Vec3& v) {
     if (vertices.size() >= kMaxIndexCount) refuse_too_large("vertices");

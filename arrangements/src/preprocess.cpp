@@ -59,8 +59,8 @@ bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 void check_well_formed(const TriangleSoup& in) {
   const std::size_t nf = in.triangles.size();
-  if (in.labels.size() != nf || in.source.size() != nf)
-    throw std::invalid_argument("preprocess: labels and source must have one entry per triangle");
+  if (in.labels.size() != nf || in.source.size() != nf || (!in.polygon.empty() && in.polygon.size() != nf))
+    throw std::invalid_argument("preprocess: labels, source (and polygon) must have one entry per triangle");
   for (std::size_t v = 0; v < in.vertices.size(); ++v)
     for (double c : in.vertices[v])
       if (!std::isfinite(c))
@@ -133,7 +133,7 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
   // distinct labels stays linear in the number of labels).
   std::vector<Tri> kept;
   std::vector<int> kept_set;
-  std::vector<std::int64_t> kept_source;
+  std::vector<std::int64_t> kept_source, kept_polygon;
   std::unordered_map<int, std::vector<std::uint32_t>> added_labels;
   {
     std::unordered_map<Tri, int, CornerSetHash> kept_by_corners;
@@ -161,6 +161,7 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
       kept.push_back(p);
       kept_set.push_back(in.labels[t]);
       kept_source.push_back(in.source[t]);
+      if (!in.polygon.empty()) kept_polygon.push_back(in.polygon[t]);
     }
   }
 
@@ -200,6 +201,7 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
     }
   }
   out.source = std::move(kept_source);
+  out.polygon = std::move(kept_polygon);
   stats.unreferenced_vertices = positions.size() - out.vertices.size();
 
   if (options.scale) {

@@ -16,16 +16,33 @@
 namespace arrangements {
 namespace {
 
-// Exact predicates are all the triangulation needs: the boundary is inserted only when it
-// is simple, so no constraint intersection is ever constructed.
+// Exact predicates are all the triangulation needs: constraints that meet anywhere but at a
+// shared end throw instead of being split at a constructed point.
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;  // corner position in the face
 using Fb = CGAL::Constrained_triangulation_face_base_2<K, CGAL::Triangulation_face_base_with_info_2<int, K>>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag>;
 
 void fan(std::span<const int> corners, std::vector<Tri>& out) {
   for (std::size_t i = 1; i + 1 < corners.size(); ++i) out.push_back({corners[0], corners[i], corners[i + 1]});
+}
+
+// The orientation of the projected triangle (corners i, j, k), exactly.
+tritri::Sign orientation(const std::vector<Vec3>& V, std::span<const int> c, int axis, std::size_t i, std::size_t j,
+                         std::size_t k) {
+  const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+  return tritri::orient2d(V[c[i]][a], V[c[i]][b], V[c[j]][a], V[c[j]][b], V[c[k]][a], V[c[k]][b]);
+}
+
+// True when every triangle of the fan from corner `apex` has orientation `sign` (!= Zero).
+// For a simple polygon of that orientation the fan then tiles it: the signed areas add up
+// to the polygon's, each point inside is covered with multiplicity 1, and all are positive.
+bool fan_is_valid(const std::vector<Vec3>& V, std::span<const int> c, int axis, std::size_t apex, tritri::Sign sign) {
+  const std::size_t n = c.size();
+  for (std::size_t i = 1; i + 1 < n; ++i)
+    if (orientation(V, c, axis, apex, (apex + i) % n, (apex + i + 1) % n) != sign) return false;
+  return sign != tritri::Sign::Zero;
 }
 
 // The axis along which the polygon's Newell normal is largest (its projection is the most
@@ -66,7 +83,7 @@ bool triangulate_simple_projection(const std::vector<Vec3>& V, std::span<const i
   try {
     for (std::size_t i = 0; i < n; ++i) cdt.insert_constraint(handle[i], handle[(i + 1) % n]);
   } catch (const Cdt::Intersection_of_constraints_exception&) {
-    return false;  // two boundary edges cross
+    return false;  // two boundary edges meet
   }
   // A corner on another boundary edge (or collinear overlap) splits that edge.
   Cdt::Face_handle f;
@@ -97,7 +114,12 @@ bool triangulate_simple_projection(const std::vector<Vec3>& V, std::span<const i
   for (std::size_t i = 1; i < n; ++i)
     if (points[i].first < points[m].first) m = i;
   const K::Point_2 &u = points[(m + n - 1) % n].first, &v = points[m].first, &w = points[(m + 1) % n].first;
-  const double sign = tritri::orient2d(u.x(), u.y(), v.x(), v.y(), w.x(), w.y()) == tritri::Sign::Negative ? -1 : 1;
+  const tritri::Sign orient = tritri::orient2d(u.x(), u.y(), v.x(), v.y(), w.x(), w.y());
+  if (fan_is_valid(V, corners, axis, 0, orient)) {  // the fan upstream and older files use
+    fan(corners, out);
+    return true;
+  }
+  const double sign = orient == tritri::Sign::Negative ? -1 : 1;
 
   std::vector<Tri> inside;
   inside.reserve(n - 2);
@@ -114,14 +136,28 @@ bool triangulate_simple_projection(const std::vector<Vec3>& V, std::span<const i
 
 }  // namespace
 
-void triangulate_polygon(const std::vector<Vec3>& V, std::span<const int> corners, std::vector<Tri>& out) {
+bool triangulate_polygon(const std::vector<Vec3>& V, std::span<const int> corners, std::vector<Tri>& out) {
   if (corners.size() == 3) {
     out.push_back({corners[0], corners[1], corners[2]});
-    return;
+    return true;
   }
   const int axis = projection_axis(V, corners);
-  if (axis >= 0 && triangulate_simple_projection(V, corners, axis, out)) return;
+  if (axis >= 0 && corners.size() == 4) {
+    // A quad is simple, and split without overlap, iff its two triangles on one diagonal
+    // have the same orientation (the other two corners lie on opposite sides of it).
+    for (std::size_t apex : {0, 1}) {
+      const tritri::Sign s = orientation(V, corners, axis, apex, apex + 1, apex + 2);
+      if (s != tritri::Sign::Zero && fan_is_valid(V, corners, axis, apex, s)) {
+        for (std::size_t i = 1; i + 1 < 4; ++i)
+          out.push_back({corners[apex], corners[(apex + i) % 4], corners[(apex + i + 1) % 4]});
+        return true;
+      }
+    }
+  } else if (axis >= 0 && triangulate_simple_projection(V, corners, axis, out)) {
+    return true;
+  }
   fan(corners, out);
+  return false;
 }
 
 }  // namespace arrangements

@@ -2,12 +2,16 @@
 //
 // Stage 4 of the pipeline: the pairs of triangles that may intersect.
 //
-// std::vector<std::pair<int, int>> candidate_pairs(V, F, threads = 0)
+// std::vector<std::pair<int, int>> candidate_pairs(V, F, threads = 0, polygon = {})
 //   V        #V list of vertex coordinates (finite)
 //   F        #F list of triangles, indices into V
 //   threads  worker threads; <= 0: all cores
+//   polygon  #F or empty: TriangleSoup::polygon (triangles of one polygon face, known to
+//            meet only in shared corners and edges, share an id >= 0)
 // returns every pair (i, j), i < j, of triangles whose closed axis-aligned bounding boxes
-// overlap (boxes that only touch count), sorted lexicographically, each pair once.
+// overlap (boxes that only touch count), sorted lexicographically, each pair once; except
+// pairs of one polygon face (same id >= 0): a face with n corners would otherwise give up
+// to n^2 / 2 pairs (its triangles may all share a corner), none of which can intersect.
 //
 // Pairs that share mesh vertices are included: they can still intersect away from what
 // they share, and the classifier decides what a shared vertex or edge contributes.
@@ -24,6 +28,8 @@
 // Cost: O(n log^3 n + k) expected for n triangles and k pairs (CGAL's segment tree).
 #pragma once
 
+#include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -32,6 +38,6 @@
 namespace arrangements {
 
 std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                                                 int threads = 0);
+                                                 int threads = 0, std::span<const std::int64_t> polygon = {});
 
 }  // namespace arrangements

@@ -11,11 +11,15 @@
 //   triangles   #F the faces, polygons triangulated (below), in file order
 //   labels      #F all 0, label_sets = {{label}}
 //   source      #F 0, 1, ..., #F-1: the triangle's index in the file's triangle list
+//   polygon     #F or empty: for the triangles of a polygon face split without overlap,
+//               the source index of the face's first triangle; -1 for the others (empty
+//               when there is no such face). Provenance: an output triangle's `source`
+//               names its input triangle; the face is the one whose n - 2 entries hold it.
 //
 // TriangleSoup load_triangle_soups(paths)
 //   File i is loaded with label i; the soups are concatenated in order (vertex indices are
-//   offset; `source` continues across files, so it indexes the concatenated triangle
-//   lists); label_sets = {{0}, {1}, ...}, labels[t] = the index of t's file. No paths:
+//   offset; `source` and `polygon` continue across files, so they index the concatenated
+//   triangle lists); label_sets = {{0}, {1}, ...}, labels[t] = the index of t's file. No paths:
 //   an empty soup.
 //
 // Polygons: a face with corners c0 c1 ... c(n-1), n > 3, becomes the n - 2 triangles of

@@ -6,8 +6,13 @@
 //   labels     #F label-set index per triangle, into `label_sets`
 //   label_sets distinct sorted label sets (any number of labels per triangle: no cap)
 //   source     #F index of each triangle in the concatenated input files' triangle lists
-//              (after fan triangulation of polygons, in file order), so that output
+//              (after triangulation of polygons, in file order), so that output
 //              provenance maps back to the input.
+//   polygon    #F, or empty (= all -1): for a triangle of a polygon face that
+//              triangulate_polygon split without overlap, an id shared by exactly the
+//              triangles of that face (the source index of its first triangle); -1
+//              otherwise. Two triangles with the same id meet only in shared corners and
+//              edges, so candidate_pairs never pairs them.
 #pragma once
 
 #include <array>
@@ -26,6 +31,7 @@ struct TriangleSoup {
   std::vector<int> labels;
   std::vector<LabelSet> label_sets;
   std::vector<std::int64_t> source;
+  std::vector<std::int64_t> polygon;
 };
 
 }  // namespace arrangements

@@ -1,16 +1,22 @@
 // arrangements/triangulate_polygon.h
 //
-// triangulate_polygon(V, corners, out): append a triangulation of one polygon face to out.
+// bool triangulate_polygon(V, corners, out): append a triangulation of one polygon face.
 //   V        the file's vertices (finite doubles)
 //   corners  the face's corners c0 .. c(n-1), n >= 3, indices into V (valid)
 //   out      receives exactly n - 2 triangles of corner indices (no new points), in a
 //            deterministic order that depends only on the corners' coordinates and order
+// returns true when the appended triangles meet only in shared corners and edges (always
+// for n = 3; for a simple projection, below), false for the fan fallback
 //
 // Polygon faces are triangulated in the plane of the polygon: the corners are projected
 // along the axis where the polygon's (Newell) normal is largest, and if that projection is
 // a simple polygon (checked exactly: no two boundary edges meet except consecutive ones at
-// their shared corner, no repeated positions), the result is a constrained triangulation of
-// it, so every triangle lies inside the polygon, the triangles meet only in shared corners
+// their shared corner, no repeated positions), the result is the fan from the first corner
+// if that fan is valid (every fan triangle oriented like the polygon: convex polygons, so
+// meshes of convex faces keep the triangles every other tool makes), for a quad otherwise
+// the fan from the second corner, and otherwise a constrained Delaunay triangulation of
+// the projection (CGAL, exact predicates). In all three cases every triangle lies inside
+// the polygon, the triangles meet only in shared corners
 // and edges, and they keep the polygon's orientation. A planar polygon is thus split into
 // triangles that do not overlap; a non-planar one whose projection is simple gets the
 // lifting of that 2D triangulation (triangles may fold, never cross each other).
@@ -31,6 +37,6 @@
 
 namespace arrangements {
 
-void triangulate_polygon(const std::vector<Vec3>& V, std::span<const int> corners, std::vector<Tri>& out);
+bool triangulate_polygon(const std::vector<Vec3>& V, std::span<const int> corners, std::vector<Tri>& out);
 
 }  // namespace arrangements
