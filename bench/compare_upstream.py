@@ -17,29 +17,48 @@ import os
 import subprocess
 import sys
 
+sys.dont_write_bytecode = True  # no bench/__pycache__ for cli_args
+from cli_args import MAX_THREADS, Parser, seconds, text, thread_count  # noqa: E402  (after the line above)
+
 KEYS = [("intersection_points", "lpi_points"), ("tpi", "tpi_points"),
         ("out_vertices", "out_verts_referenced"), ("out_edges", "out_edges"),
         ("out_triangles", "out_tris"), ("euler", "euler")]
 
 
-def main():
+def main(argv=None):
     here = os.path.dirname(os.path.abspath(__file__))
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--arrange", default=os.path.join(here, "..", "build", "bin", "arrange"))
-    ap.add_argument("--meshes", default=os.path.join(here, "..", "..", "shared", "meshes"))
-    ap.add_argument("--classifier", default="tritri")
-    ap.add_argument("--threads", default="0")
-    ap.add_argument("--only", default="")
-    ap.add_argument("--ember-dir", default="")
-    ap.add_argument("--json", default="")
-    ap.add_argument("--timeout", type=float, default=600)
-    a = ap.parse_args()
-    records = [json.loads(l) for l in open(os.path.join(a.meshes, "upstream_reference.jsonl"))]
+    ap = Parser(prog="compare_upstream.py", description=__doc__,
+                formatter_class=argparse.RawDescriptionHelpFormatter,
+                epilog="An option that takes a value may be given once; numbers are plain decimal "
+                       "digits. Exit status 2 for a bad command line or a missing reference file.")
+    ap.add_argument("--arrange", type=text, default=os.path.join(here, "..", "build", "bin", "arrange"))
+    ap.add_argument("--meshes", type=text, default=os.path.join(here, "..", "..", "shared", "meshes"))
+    ap.add_argument("--classifier", choices=("tritri", "native"), default="tritri")
+    ap.add_argument("--threads", type=thread_count, default=0, help=f"0 (all cores) to {MAX_THREADS}")
+    ap.add_argument("--only", type=text, help="only records whose file contains this")
+    ap.add_argument("--ember-dir", type=text)
+    ap.add_argument("--json", type=text, help="also write one JSON line per mesh here")
+    ap.add_argument("--timeout", type=seconds(0, 10**7), default=600, help="seconds per mesh, 0 for none")
+    a = ap.parse_args(argv)
+    reference = os.path.join(a.meshes, "upstream_reference.jsonl")
+    try:
+        with open(reference) as f:
+            records = [json.loads(line) for line in f if line.strip()]
+    except (OSError, ValueError) as e:
+        print(f"compare_upstream.py: {reference}: cannot read the reference counts ({e})", file=sys.stderr)
+        return 2
+    if not os.access(a.arrange, os.X_OK):
+        print(f"compare_upstream.py: {a.arrange}: no such executable (--arrange)", file=sys.stderr)
+        return 2
     same = differ = skipped = failed = 0
-    out = open(a.json + ".tmp", "w") if a.json else None
+    try:
+        out = open(a.json + ".tmp", "w") if a.json else None
+    except OSError as e:
+        print(f"compare_upstream.py: --json {a.json}: cannot write ({e})", file=sys.stderr)
+        return 2
     for r in records:
         f = r["file"]
-        if r.get("status") != "ok" or a.only not in f:
+        if r.get("status") != "ok" or (a.only or "") not in f:
             continue
         # Upstream's loader does not triangulate polygons: only its fan-triangulated
         # variant of such a file is comparable (see the meshes' README).
@@ -51,9 +70,9 @@ def main():
         if not path or not os.path.exists(path):
             skipped += 1
             continue
-        cmd = [a.arrange, path, "--stats", "--classifier", a.classifier, "--threads", a.threads]
+        cmd = [a.arrange, path, "--stats", "--classifier", a.classifier, "--threads", str(a.threads)]
         try:
-            p = subprocess.run(cmd, capture_output=True, text=True, timeout=a.timeout)
+            p = subprocess.run(cmd, capture_output=True, text=True, timeout=a.timeout or None)
         except subprocess.TimeoutExpired:
             print(f"TIMEOUT {f}")
             failed += 1

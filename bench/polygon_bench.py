@@ -19,15 +19,8 @@ import subprocess
 import sys
 import tempfile
 
-
-def positive_int(text):
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not an integer: {text!r}") from None
-    if not 1 <= value <= 10_000_000:
-        raise argparse.ArgumentTypeError(f"out of range [1, 10000000]: {value}")
-    return value
+sys.dont_write_bytecode = True  # no bench/__pycache__ for cli_args
+from cli_args import Parser, integer, text  # noqa: E402  (after the line above)
 
 
 def polygon(kind, n):
@@ -61,15 +54,21 @@ def run(binary, path):
     return json.loads(out.stdout)
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--arrange", required=True, help="the arrange binary to time")
-    ap.add_argument("--baseline", help="an older arrange binary, run alternately")
-    ap.add_argument("--corners", type=positive_int, default=30000)
-    ap.add_argument("--runs", type=positive_int, default=3)
+def main(argv=None):
+    ap = Parser(prog="polygon_bench.py", description=__doc__,
+                formatter_class=argparse.RawDescriptionHelpFormatter,
+                epilog="An option that takes a value may be given once; numbers are plain decimal "
+                       "digits. Exit status 2 for a bad command line.")
+    ap.add_argument("--arrange", type=text, required=True, help="the arrange binary to time")
+    ap.add_argument("--baseline", type=text, help="an older arrange binary, run alternately")
+    ap.add_argument("--corners", type=integer(3, 10_000_000), default=30000, help="3 to 10000000")
+    ap.add_argument("--runs", type=integer(1, 1000), default=3, help="1 to 1000")
     ap.add_argument("--json", action="store_true", help="one JSON object per workload")
     ap.add_argument("--kinds", nargs="+", choices=("regular", "star", "comb"), default=("regular", "star", "comb"))
-    args = ap.parse_args()
+    args = ap.parse_args(argv)
+    for option, binary in (("--arrange", args.arrange), ("--baseline", args.baseline)):
+        if binary is not None and not os.access(binary, os.X_OK):
+            ap.error(f"{option} {binary}: no such executable")
     with tempfile.TemporaryDirectory() as tmp:
         for kind in args.kinds:
             path = os.path.join(tmp, f"{kind}.off")

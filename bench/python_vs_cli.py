@@ -17,18 +17,30 @@ import subprocess
 import sys
 import time
 
-import tritri
+sys.dont_write_bytecode = True  # no bench/__pycache__ for cli_args
+from cli_args import MAX_THREADS, Parser, integer, text, thread_count  # noqa: E402  (after the line above)
 
 
-def main():
+def main(argv=None):
     here = os.path.dirname(os.path.abspath(__file__))
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("meshes")
-    ap.add_argument("--arrange", default=os.path.join(here, "..", "build", "bin", "arrange"))
-    ap.add_argument("--repeat", type=int, default=3)
-    ap.add_argument("--largest", type=int, default=3)
-    ap.add_argument("--threads", type=int, default=0)
-    a = ap.parse_args()
+    ap = Parser(prog="python_vs_cli.py", description=__doc__,
+                formatter_class=argparse.RawDescriptionHelpFormatter,
+                epilog="An option that takes a value may be given once; numbers are plain decimal "
+                       "digits. Exit status 2 for a bad command line.")
+    ap.add_argument("meshes", type=text, help="a folder of meshes (searched recursively)")
+    ap.add_argument("--arrange", type=text, default=os.path.join(here, "..", "build", "bin", "arrange"))
+    ap.add_argument("--repeat", type=integer(1, 1000), default=3, help="timing runs, 1 to 1000")
+    ap.add_argument("--largest", type=integer(0, 1000000), default=3, help="meshes timed, 0 to 1000000")
+    ap.add_argument("--threads", type=thread_count, default=0, help=f"0 (all cores) to {MAX_THREADS}")
+    a = ap.parse_args(argv)
+    if not os.path.isdir(a.meshes):
+        ap.error(f"{a.meshes}: not a folder")
+    if not os.access(a.arrange, os.X_OK):
+        ap.error(f"--arrange {a.arrange}: no such executable")
+    try:
+        import tritri
+    except ImportError as e:
+        ap.error(f"cannot import tritri ({e}): pip install . first")
     files = sorted(os.path.join(d, f) for d, _, fs in os.walk(a.meshes) for f in fs
                    if f.lower().endswith((".obj", ".off", ".stl", ".ply")))
     same = differ = refused = 0

@@ -10,16 +10,19 @@ merged; when a model appears more than once the last line wins) and writes, each
                          totals, and the lists of disagreements, errors, crashes and time-outs
   DIR/time_classes.png   models per time class, tritri and native side by side
   DIR/times_sorted.png   both classifiers' times, log scale, models sorted by tritri time
-Exit status: 0 on success, 2 for a missing or malformed results file (with its line number),
-1 when the charts could not be drawn (report.md is still written).
+Exit status: 0 on success, 2 for a bad command line (an empty value, an option given twice)
+or a missing or malformed results file (with its line number), 1 when the charts could not
+be drawn (report.md is still written).
 """
-import argparse
 import json
 import os
 import statistics
 import sys
 import tempfile
 from pathlib import Path
+
+sys.dont_write_bytecode = True  # no bench/__pycache__ for cli_args
+from cli_args import Parser, path, text  # noqa: E402  (after the line above)
 
 STATUSES = ("agree", "disagree", "error", "crash", "timeout")
 CLASSIFIERS = ("tritri", "native")
@@ -286,17 +289,23 @@ def write_atomic(path, write):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("results", nargs="+", help="JSON-lines files written by run_collection.py")
-    ap.add_argument("--out", required=True, type=Path, help="output folder (created)")
-    ap.add_argument("--title", default="tritri vs native: collection report")
+    ap = Parser(prog="report.py", description=__doc__.split("\n\n")[0],
+                epilog="An option that takes a value may be given once; exit status 2 for a bad "
+                       "command line or results file.")
+    ap.add_argument("results", nargs="+", type=text, help="JSON-lines files written by run_collection.py")
+    ap.add_argument("--out", required=True, type=path, help="output folder (created)")
+    ap.add_argument("--title", type=text, default="tritri vs native: collection report")
     args = ap.parse_args(argv)
     try:
         records = sorted(read_results(args.results).values(), key=lambda r: r["model"])
     except ResultsError as e:
         print(f"report.py: {e}", file=sys.stderr)
         return 2
-    args.out.mkdir(parents=True, exist_ok=True)
+    try:
+        args.out.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        print(f"report.py: --out {args.out}: cannot create the folder ({e})", file=sys.stderr)
+        return 2
 
     charts, status = [], 0
     try:

@@ -38,11 +38,15 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
+sys.dont_write_bytecode = True  # no bench/__pycache__ for cli_args
+from cli_args import Parser, integer, path, seconds, text  # noqa: E402  (after the line above)
+
 REPO_ROOT = Path(__file__).resolve().parent.parent
 DEFAULT_TOOL = REPO_ROOT / "build" / "bin" / "tritri-compare"
 DEFAULT_PATTERNS = ["*.obj", "*.off", "*.stl", "*.ply"]
 STATUSES = ("agree", "disagree", "error", "crash", "timeout")
 STDERR_TAIL_CHARS = 2000
+MAX_JOBS, MAX_SHARDS, MAX_TIMEOUT_S = 1024, 1000000, 10**7
 MCUT_NAME = re.compile(r"^(src|cut)-mesh(\d+)\.off$", re.IGNORECASE)
 EMBER_CASES = "ember_cases_subset.json"
 EMBER_ID_DIR = "pairs"  # the folder upstream_reference.jsonl uses for combined pairs
@@ -137,10 +141,10 @@ def select_shard(models, shard):
     return [m for i, m in enumerate(models) if i % n == k - 1]
 
 
-def parse_shard(text):
-    m = re.fullmatch(r"(\d+)/(\d+)", text or "")
-    if not m or not 1 <= int(m.group(1)) <= int(m.group(2)):
-        raise argparse.ArgumentTypeError(f"expected K/N with 1 <= K <= N, got '{text}'")
+def parse_shard(value):
+    m = re.fullmatch(r"([0-9]+)/([0-9]+)", value)
+    if not m or not 1 <= int(m.group(1)) <= int(m.group(2)) <= MAX_SHARDS:
+        raise argparse.ArgumentTypeError(f"expected K/N with 1 <= K <= N <= {MAX_SHARDS}, got '{value}'")
     return int(m.group(1)), int(m.group(2))
 
 
@@ -387,25 +391,27 @@ class Progress:
 
 
 def parse_args(argv):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 epilog="See bench/README.md for an sbatch job-array example.")
-    ap.add_argument("input", help="a folder of meshes or a manifest CSV (column 'file')")
-    ap.add_argument("--out", required=True, type=Path, help="results file (JSON lines), appended")
-    ap.add_argument("--tool", type=Path, default=DEFAULT_TOOL,
+    ap = Parser(prog="run_collection.py", description=__doc__.split("\n\n")[0],
+                epilog="An option that takes a value may be given once; numbers are plain decimal "
+                       "digits. See bench/README.md for an sbatch job-array example.")
+    ap.add_argument("input", type=path, help="a folder of meshes or a manifest CSV (column 'file')")
+    ap.add_argument("--out", required=True, type=path, help="results file (JSON lines), appended")
+    ap.add_argument("--tool", type=path, default=DEFAULT_TOOL,
                     help="the per-model tool (default: %(default)s)")
-    ap.add_argument("--jobs", type=int, default=2, help="models run at once (default: 2)")
-    ap.add_argument("--tool-arg", dest="tool_args", action="append", default=[], metavar="ARG",
+    ap.add_argument("--jobs", type=integer(1, MAX_JOBS), default=2,
+                    help=f"models run at once, 1 to {MAX_JOBS} (default: 2)")
+    ap.add_argument("--tool-arg", dest="tool_args", action="append", default=[], metavar="ARG", type=text,
                     help="an extra argument for the tool, e.g. --tool-arg=--repeat --tool-arg=3 "
                          "(repeatable)")
-    ap.add_argument("--timeout", type=float, default=900,
+    ap.add_argument("--timeout", type=seconds(0, MAX_TIMEOUT_S), default=900,
                     help="seconds per model, 0 for none (default: 900)")
     ap.add_argument("--shard", type=parse_shard, default=(1, 1), metavar="K/N",
                     help="run the K-th of N interleaved parts (1-based)")
-    ap.add_argument("--pattern", nargs="+", default=DEFAULT_PATTERNS, metavar="GLOB",
+    ap.add_argument("--pattern", nargs="+", default=DEFAULT_PATTERNS, metavar="GLOB", type=text,
                     help="file name globs, case-insensitive (default: %(default)s)")
     ap.add_argument("--pairs", action="store_true",
                     help="group MCUT src/cut pairs into one model and add the EMBER pairs")
-    ap.add_argument("--pairs-dir", type=Path,
+    ap.add_argument("--pairs-dir", type=path,
                     help="where the EMBER pairs are built (default: ember_pairs/ beside --out)")
     ap.add_argument("--retry", nargs="+", default=[], choices=STATUSES, metavar="STATUS",
                     help="also rerun models recorded with these statuses (a new line is "
@@ -413,9 +419,9 @@ def parse_args(argv):
     ap.add_argument("--list", action="store_true",
                     help="print the selected models (after --shard) and exit")
     args = ap.parse_args(argv)
-    if args.jobs < 1:
-        ap.error("--jobs must be at least 1")
     args.pattern = [p for item in args.pattern for p in re.split(r"[\s,]+", item) if p]
+    if not args.pattern:
+        ap.error("--pattern needs at least one glob")
     if args.pairs_dir is None:
         args.pairs_dir = args.out.parent / "ember_pairs"
     return args

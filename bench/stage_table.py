@@ -15,6 +15,9 @@ import os
 import subprocess
 import sys
 
+sys.dont_write_bytecode = True  # no bench/__pycache__ for cli_args
+from cli_args import MAX_THREADS, Parser, text, thread_count  # noqa: E402  (after the line above)
+
 
 def run(arrange, mesh, threads):
     out = subprocess.run([arrange, mesh, "--stats", "--threads", str(threads)],
@@ -24,12 +27,18 @@ def run(arrange, mesh, threads):
     return json.loads(out.stdout)
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--arrange", default="build/bin/arrange")
-    ap.add_argument("--threads", type=int, nargs="+", default=[1, 2])
-    ap.add_argument("meshes", nargs="+")
-    a = ap.parse_args()
+def main(argv=None):
+    ap = Parser(prog="stage_table.py", description=__doc__,
+                formatter_class=argparse.RawDescriptionHelpFormatter,
+                epilog="An option that takes a value may be given once; numbers are plain decimal "
+                       "digits. Exit status 2 for a bad command line.")
+    ap.add_argument("--arrange", type=text, default="build/bin/arrange")
+    ap.add_argument("--threads", type=thread_count, nargs="+", default=[1, 2],
+                    help=f"thread counts, each 0 (all cores) to {MAX_THREADS}")
+    ap.add_argument("meshes", type=text, nargs="+")
+    a = ap.parse_args(argv)
+    if not os.access(a.arrange, os.X_OK):
+        ap.error(f"--arrange {a.arrange}: no such executable")
     print("| mesh | tris | cand. pairs | LPI + TPI | out tris | thr | load s | prep s | cand s | classify s | "
           "triangulate s | output s | total s | peak MB |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
@@ -56,4 +65,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -54,7 +54,8 @@ JOBS=$JOBS scripts/test_python.sh
 echo "=== [5/5] Collection runner and report tests, tritri-compare on the default meshes"
 VENV=$ROOT/build-python/venv
 "$VENV/bin/python" -m pip install -q matplotlib pytest
-"$VENV/bin/python" -m pytest -q -p no:cacheprovider tests/python/test_run_collection.py tests/python/test_report.py
+"$VENV/bin/python" -m pytest -q -p no:cacheprovider tests/python/test_run_collection.py tests/python/test_report.py \
+  tests/python/test_script_args.py
 meshes=$(mktemp -d)
 build/bin/make_test_meshes "$meshes/default"
 "$VENV/bin/python" bench/run_collection.py "$meshes/default" --out "$meshes/results.jsonl" --tool build/bin/tritri-compare
