@@ -312,7 +312,7 @@ TEST(Preprocess, ScalesTheSmallestSubnormalTriangleExactly) {
   EXPECT_EQ(out.vertices, (std::vector<Vec3>{{0, 0, 0}, {512, 0, 0}, {0, 512, 0}}));
 }
 
-TEST(Preprocess, RefusesScalingThatWouldRoundACoordinate) {
+TEST(Preprocess, LeavesTheModelUnscaledWhenScalingWouldRoundACoordinate) {
   // k = -987 (largest 1e300): 3 * 2^-40 becomes 3 * 2^-1027, still exact (subnormal);
   // (1 + 2^-52) * 2^-40 would need bits down to 2^-1079: rounded, refused.
   const TriangleSoup fine = make_soup({{1e300, 0, 0}, {0, 3 * std::ldexp(1.0, -40), 0}, {0, 0, 1}}, {{0, 1, 2}});
@@ -320,15 +320,11 @@ TEST(Preprocess, RefusesScalingThatWouldRoundACoordinate) {
   EXPECT_EQ(preprocess(fine, {true}, stats).vertices[1][1], 3 * std::ldexp(1.0, -1027));
   const double fine_grained = std::ldexp(std::nextafter(1.0, 2.0), -40);
   const TriangleSoup rounding = make_soup({{1e300, 0, 0}, {0, fine_grained, 0}, {0, 0, 1}}, {{0, 1, 2}});
-  try {
-    preprocess(rounding, {true}, stats);
-    ADD_FAILURE() << "scaling must be refused";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.kind, InputErrorKind::unscalable) << e.what();
-  }
+  EXPECT_EQ(preprocess(rounding, {true}, stats).vertices[1][1], fine_grained);  // valid input, never refused
+  EXPECT_EQ(stats.scale_exponent, 0);
   const TriangleSoup underflow = make_soup({{1e300, 0, 0}, {0, 1e-300, 0}, {0, 0, 1}}, {{0, 1, 2}});
-  EXPECT_THROW(preprocess(underflow, {true}, stats), InputError);
-  // Without scaling the same soups pass unchanged.
+  EXPECT_EQ(preprocess(underflow, {true}, stats).vertices[1][1], 1e-300);
+  EXPECT_EQ(stats.scale_exponent, 0);
   EXPECT_EQ(preprocess(rounding, {false}, stats).vertices[1][1], fine_grained);
   EXPECT_EQ(stats.scale_exponent, 0);
 }

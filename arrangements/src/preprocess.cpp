@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -93,18 +92,14 @@ int scale_exponent_for(double max_abs) {
   return 10 - e;
 }
 
-void scale_exactly(std::vector<Vec3>& vertices, int k) {
-  for (std::size_t v = 0; v < vertices.size(); ++v)
-    for (double c : vertices[v])
-      if (std::ldexp(std::ldexp(c, k), -k) != c) {
-        std::ostringstream msg;
-        msg.precision(17);
-        msg << "scaling by 2^" << k << " would round coordinate " << c << " of vertex " << v
-            << " (after merging): the coordinates span too many binary orders of magnitude";
-        throw InputError(InputErrorKind::unscalable, msg.str());
-      }
+// Scales by 2^k if that is exact for every coordinate; false (nothing changed) otherwise.
+bool scale_exactly(std::vector<Vec3>& vertices, int k) {
+  for (const Vec3& p : vertices)
+    for (double c : p)
+      if (std::ldexp(std::ldexp(c, k), -k) != c) return false;
   for (Vec3& p : vertices)
     for (double& c : p) c = std::ldexp(c, k);
+  return true;
 }
 
 }  // namespace
@@ -209,7 +204,7 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
     for (const Vec3& p : out.vertices)
       for (double c : p) max_abs = std::max(max_abs, std::fabs(c));
     stats.scale_exponent = scale_exponent_for(max_abs);
-    scale_exactly(out.vertices, stats.scale_exponent);
+    if (!scale_exactly(out.vertices, stats.scale_exponent)) stats.scale_exponent = 0;  // valid input: kept as is
   }
   return out;
 }

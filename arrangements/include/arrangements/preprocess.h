@@ -38,8 +38,8 @@
 // polynomial of degree d in the coordinates then stays below 2^(10 d) (no overflow for
 // the degrees of implicit-point predicates), and tiny models are lifted away from the
 // underflow range. k < 0 can push small coordinates of a model with a huge dynamic range
-// into the subnormal range, where they would be rounded: then nothing is scaled and
-// InputError (kind unscalable) is thrown. All-zero coordinates (no triangle survives
+// into the subnormal range, where they would be rounded: then nothing is scaled
+// (scale_exponent 0; the later stages are exact at any magnitude, only slower). All-zero coordinates (no triangle survives
 // anyway) give k = 0.
 //
 // Throws std::invalid_argument for an ill-formed soup (index or label index out of range,

@@ -9,7 +9,8 @@
 // returns ExactMesh
 //   vertices   #V exact coordinates, in file order
 //   triangles  #F vertex indices into `vertices`; a face with n > 3 corners becomes the
-//              fan (c0, c_i, c_(i+1)), i = 1 .. n-2, as in load_triangle_soup
+//              fan (c0, c_i, c_(i+1)), i = 1 .. n-2 (what load_triangle_soup makes of a
+//              convex polygon; arrange writes triangles only)
 //
 // Numbers (one whitespace-free token each):
 //   rational  [+-]? digits ( "/" digits )?   the denominator not zero; need not be reduced
