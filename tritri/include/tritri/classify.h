@@ -19,13 +19,14 @@
 //   when vertices lie in the other triangle's plane. Coplanar pairs: at most 22 orient2d.
 //   Nothing is evaluated that the signs already known rule out.
 //
-// Algorithm (DESIGN.md 3.4): the signs of B's vertices against A's plane and of A's
-// vertices against B's plane reject separated pairs and detect coplanarity. Otherwise
-// A ∩ plane(B) is a segment SA whose endpoints are vertices of A or crossings of A's
-// edges, likewise SB, and A ∩ B = SA ∩ SB on the line plane(A) ∩ plane(B). In general
-// position the four crossings are ordered along that line with one orient3d each; when
-// vertices lie in the other plane each endpoint is located in the other triangle.
-// Coplanar pairs use the 18 orient2d signs of every vertex against every edge line.
+// Algorithm (docs/ARCHITECTURE.md, "The classification algorithm"): the signs of B's
+// vertices against A's plane and of A's vertices against B's plane reject separated
+// pairs and detect coplanarity. Otherwise A ∩ plane(B) is a segment SA whose endpoints
+// are vertices of A or crossings of A's edges, likewise SB, and A ∩ B = SA ∩ SB on the
+// line plane(A) ∩ plane(B). In general position the four crossings are ordered along
+// that line with one orient3d each; when vertices lie in the other plane each endpoint
+// is located in the other triangle. Coplanar pairs use the 18 orient2d signs of every
+// vertex against every edge line.
 #pragma once
 
 #include <utility>
