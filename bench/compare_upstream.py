@@ -6,7 +6,7 @@ usage: compare_upstream.py [--arrange build/bin/arrange] [--meshes ../shared/mes
                            [--ember-dir DIR] [--json OUT.jsonl]
 
 For every record with status "ok" it runs the pipeline on the same file (records of
-fan-triangulated variants: our loader fan-triangulates too; pairs/ember-*: built with
+fan-triangulated variants: triangle meshes, loaded as they are; pairs/ember-*: built with
 ../tools/make_ember_pairs.py into --ember-dir when given, skipped otherwise) and compares
 lpi, tpi, referenced output vertices, edges, triangles and the Euler characteristic.
 Prints one line per mismatch and a summary; exit status 1 if anything differs.

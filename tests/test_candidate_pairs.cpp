@@ -6,7 +6,9 @@
 //   touching boxes, random soups) and on a real mesh of the shared collection.
 #include <gtest/gtest.h>
 
+#include <arrangements/arrange.h>
 #include <arrangements/candidate_pairs.h>
+#include <arrangements/thread_count.h>
 #include <arrangements/load_triangle_soup.h>
 #include <arrangements/mesh_generators.h>
 
@@ -22,7 +24,11 @@
 
 namespace {
 
+using arrangements::arrange;
+using arrangements::ArrangeOptions;
 using arrangements::candidate_pairs;
+using arrangements::kMaxThreads;
+using arrangements::TriangleSoup;
 using arrangements::Tri;
 using arrangements::Vec3;
 using Pairs = std::vector<std::pair<int, int>>;
@@ -75,6 +81,26 @@ TEST(CandidatePairs, RefusesInvalidIndicesAndNonFiniteCoordinates) {
   EXPECT_THROW(candidate_pairs(V, {{0, 1, 2}, {-1, 1, 2}}), std::invalid_argument);
   const std::vector<Vec3> W = {{0, 0, 0}, {1, 0, 0}, {0, INFINITY, 0}};
   EXPECT_THROW(candidate_pairs(W, {{0, 1, 2}, {0, 1, 2}}), std::invalid_argument);
+}
+
+// oneTBB crashes on huge arenas: the library refuses what the tools refuse (thread_count.h).
+TEST(CandidatePairs, RefusesThreadCountsAboveTheCapInTheLibraryToo) {
+  const std::vector<Vec3> V = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const std::vector<Tri> F = {{0, 1, 2}, {0, 2, 1}};
+  EXPECT_EQ(candidate_pairs(V, F, kMaxThreads).size(), 1u);
+  EXPECT_THROW(candidate_pairs(V, F, kMaxThreads + 1), std::invalid_argument);
+  EXPECT_THROW(candidate_pairs(V, F, 100000), std::invalid_argument);
+  TriangleSoup soup;
+  soup.vertices = V;
+  soup.triangles = F;
+  soup.labels = {0, 0};
+  soup.label_sets = {{0}};
+  soup.source = {0, 1};
+  ArrangeOptions options;
+  options.threads = 100000;
+  EXPECT_THROW(arrange(soup, options), std::invalid_argument);
+  options.threads = 2;
+  EXPECT_EQ(arrange(soup, options).mesh.triangles.size(), 1u);  // the duplicate is merged
 }
 
 // Triangles with integer corners base + [0, spread) with base in [0, range): boxes touch

@@ -8,7 +8,7 @@
 // - a naive reference (all-pairs comparisons, integer cross products) agrees on random
 //   soups on a small grid;
 // - optional scaling by 2^k puts the largest |coordinate| in [2^9, 2^10), exactly, for any
-//   magnitude (below 1, subnormal, huge), and refuses when it would round.
+//   magnitude (below 1, subnormal, huge), and leaves the model unscaled when it would round.
 // Expected values are written by hand or computed by the naive reference.
 #include <gtest/gtest.h>
 

@@ -7,6 +7,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "arrangements/candidate_pairs.h"
 #include "arrangements/input_error.h"
@@ -14,6 +16,7 @@
 #include "arrangements/mesh_counts.h"
 #include "arrangements/preprocess.h"
 #include "arrangements/propagate_coplanar.h"
+#include "arrangements/thread_count.h"
 #include "arrangements/triangulate.h"
 
 namespace arrangements {
@@ -60,6 +63,9 @@ OutputMesh make_output(const TriangleSoup& soup, Triangulation&& tr, int scale_e
 }  // namespace
 
 ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) {
+  if (options.threads > kMaxThreads)  // oneTBB crashes or aborts on huge arenas (thread_count.h)
+    throw std::invalid_argument("arrange: threads must be at most " + std::to_string(kMaxThreads) + ", got " +
+                                std::to_string(options.threads));
   const int workers = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, workers);
   ArrangeResult r;

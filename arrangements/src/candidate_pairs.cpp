@@ -17,6 +17,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "arrangements/thread_count.h"
+
 namespace arrangements {
 namespace {
 
@@ -168,6 +170,8 @@ Pairs overlapping_pairs_with_faces(const std::vector<Box>& boxes, std::span<cons
 
 std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
                                                  int threads, std::span<const std::int64_t> polygon) {
+  if (threads > kMaxThreads)
+    throw std::invalid_argument("candidate_pairs: threads must be at most " + std::to_string(kMaxThreads));
   if (!polygon.empty() && polygon.size() != F.size())
     throw std::invalid_argument("candidate_pairs: polygon must be empty or have one entry per triangle");
   std::vector<Box> boxes = triangle_boxes(V, F);

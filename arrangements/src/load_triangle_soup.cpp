@@ -27,7 +27,6 @@ const char* to_string(InputErrorKind kind) noexcept {
     case InputErrorKind::too_few_corners: return "too_few_corners";
     case InputErrorKind::empty_mesh: return "empty_mesh";
     case InputErrorKind::too_large: return "too_large";
-    case InputErrorKind::unscalable: return "unscalable";
   }
   return "unknown";
 }

@@ -42,8 +42,8 @@ pair (implicit points, never rounded), exact triangulation of every intersected 
 options:
   -o, --output FILE       write the arrangement (.obj .off .ply by extension), atomically.
                           Provenance: for every output triangle the input triangle it lies
-                          in (index in the input files' concatenated triangle lists, polygons
-                          fan-triangulated) and its label set: PLY face properties, or the
+                          in (index in the input files' concatenated triangle lists, an
+                          n-gon as n - 2 consecutive triangles) and its label set: PLY face properties, or the
                           side file FILE.provenance.csv for OBJ/OFF
   --exact                 write exact rational coordinates (OBJ/OFF; see README) instead of
                           coordinates rounded to the nearest double

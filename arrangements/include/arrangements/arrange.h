@@ -7,16 +7,18 @@
 //
 // Inputs:  input   a TriangleSoup (e.g. load_triangle_soups); finite coordinates, valid
 //                  indices (otherwise std::invalid_argument)
-//          options classifier, threads (<= 0: all cores; the caller's TBB arena limit also
-//                  applies), scale (exact power-of-two scaling, see preprocess.h),
+//          options classifier, threads (<= 0: all cores; at most kMaxThreads, see
+//                  thread_count.h, else std::invalid_argument; the caller's TBB arena
+//                  limit also applies), scale (exact power-of-two scaling, see preprocess.h),
 //                  keep_graph (keep the intersection graph and preprocessed soup in the
 //                  result, for comparisons), count_predicates (count the classification
 //                  stage's orient3d / orient2d calls; costs a thread-local load per call)
 // Output:  ArrangeResult: the output mesh (in the input's coordinates, also with scale:
-//          its points are rebuilt from the unscaled defining points, exactly), the statistics (counts and stage times), and
+//          its points are rebuilt from the unscaled defining points, exactly), the
+//          statistics (counts and stage times), and
 //          optionally the preprocessed soup and the intersection graph.
 // A soup with no triangle left after preprocessing (all degenerate, or none at all) is
-// valid: its arrangement is empty. Throws InputError only when the model cannot be scaled.
+// valid: its arrangement is empty. Valid input is never refused.
 // Exact throughout; deterministic for any number of threads.
 #pragma once
 

@@ -10,7 +10,7 @@
 //
 // Inputs:
 //   V        #V by 3 matrix of vertex coordinates, finite (they are used exactly)
-//   F        #F by 3 matrix of triangle corners, indices into the rows of V; #F >= 1
+//   F        #F by 3 matrix of triangle corners, indices into the rows of V (#F may be 0)
 //   options  ArrangeOptions (arrange.h): classifier (Tritri or Native), threads (<= 0:
 //            all cores), scale; keep_graph is ignored (always off here)
 //   labels   optional #F vector of labels >= 0, one per row of F (nullptr: all 0), e.g.
@@ -33,9 +33,8 @@
 //
 // Throws std::invalid_argument for input the pipeline cannot take: V or F without 3
 // columns, a NaN or infinite coordinate, an index out of range, labels of the wrong size
-// or negative, more rows than int indices allow. Throws arrangements::InputError
-// (input_error.h) when nothing is left to arrange (no triangles, or none survives the
-// preprocessing) or the model cannot be scaled.
+// or negative, more rows than int indices allow, more threads than kMaxThreads. Input with
+// no triangle left after preprocessing is valid: its arrangement is empty.
 //
 // Exactness: the arrangement is exact (implicit points, exact predicates); only V is
 // rounded, so V may show self-intersections the exact mesh does not have (V_is_exact

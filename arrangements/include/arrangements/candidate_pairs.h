@@ -5,7 +5,7 @@
 // std::vector<std::pair<int, int>> candidate_pairs(V, F, threads = 0, polygon = {})
 //   V        #V list of vertex coordinates (finite)
 //   F        #F list of triangles, indices into V
-//   threads  worker threads; <= 0: all cores
+//   threads  worker threads; <= 0: all cores; at most kMaxThreads (thread_count.h)
 //   polygon  #F or empty: TriangleSoup::polygon (triangles of one polygon face, known to
 //            meet only in shared corners and edges, share an id >= 0)
 // returns every pair (i, j), i < j, of triangles whose closed axis-aligned bounding boxes

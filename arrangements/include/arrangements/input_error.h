@@ -26,7 +26,6 @@ enum class InputErrorKind {
   too_few_corners,        // a face with fewer than 3 corners
   empty_mesh,             // no faces at all
   too_large,              // more vertices or triangles than the pipeline's int indices allow
-  unscalable,             // power-of-two scaling would round a coordinate
 };
 
 // A short stable name for the kind ("non_finite_coordinate", ...).
