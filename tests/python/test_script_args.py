@@ -2,12 +2,13 @@
 error (exit status 2 and a message naming the option), never a traceback or a hang.
 
 Table-driven over run_collection.py, report.py, compare_upstream.py, python_vs_cli.py,
-stage_table.py and polygon_bench.py: empty values, signs, spaces, prefixes, fractions, NaN/Inf, numbers beyond
-every range (2^31 - 1, 2^63, 10^30), missing values, an option given twice, unknown
+stage_table.py, polygon_bench.py and pipeline_bench.py: empty values, signs, spaces,
+prefixes, fractions, NaN/Inf, numbers beyond every range (2^31 - 1, 2^63, 10^30), missing values, an option given twice, unknown
 options. Most cases call the scripts' main(argv) in this process (argparse's SystemExit
 carries the exit status); a sample runs them as processes. The shared rules and the thread
 cap come from bench/cli_args.py, which reads the cap from the C++ header.
 """
+import json
 import re
 import subprocess
 import sys
@@ -17,6 +18,7 @@ import pytest
 
 import cli_args
 import compare_upstream
+import pipeline_bench
 import polygon_bench
 import python_vs_cli
 import report
@@ -49,6 +51,7 @@ def setup(tmp_path):
         "python_vs_cli": (python_vs_cli.main, [str(tmp_path / "meshes"), "--arrange", str(tool)]),
         "stage_table": (stage_table.main, ["--arrange", str(tool), str(meshes / "a.off")]),
         "polygon_bench": (polygon_bench.main, ["--arrange", str(tool)]),
+        "pipeline_bench": (pipeline_bench.main, ["--arrange", str(tool), "--meshes", str(reference)]),
     }
 
 
@@ -84,20 +87,34 @@ OPTIONS = [
     ("polygon_bench", "--arrange", [""], "a"),
     ("polygon_bench", "--baseline", [""], "a"),
     ("polygon_bench", "--kinds", ["", "square"], "star"),
+    ("pipeline_bench", "--threads", BAD_INTEGERS + [str(cli_args.MAX_THREADS + 1), "1,", ",1", "1,,2", "1,1",
+                                                    "1;2", "1 2", "1,-2", "1,2x"], "1,2"),
+    ("pipeline_bench", "--runs", BAD_INTEGERS + ["0", "1001"], "1"),
+    ("pipeline_bench", "--timeout", BAD_SECONDS, "1"),
+    ("pipeline_bench", "--only", ["", ",", "box,", ",box", "box,,ogre", "no-such-workload"], "box"),
+    ("pipeline_bench", "--arrange", ["", "/nonexistent/arrange"], "a"),
+    ("pipeline_bench", "--baseline", ["", "/nonexistent/arrange"], "a"),
+    ("pipeline_bench", "--meshes", [""], "m"),
+    ("pipeline_bench", "--work", [""], "w"),
+    ("pipeline_bench", "--json", [""], "j.jsonl"),
+    ("pipeline_bench", "--reference-omc", [""], "p.md"),  # its value is optional
 ]
+OPTIONAL_VALUE = {("pipeline_bench", "--reference-omc")}
 
 
 def hostile_cases():
     for script, option, values, valid in OPTIONS:
         for i, v in enumerate(values):
             yield pytest.param(script, lambda base, o=option, v=v: base + [o, v], option, id=f"{script}{option}-{i}")
-        yield pytest.param(script, lambda base, o=option: base + [o], option, id=f"{script}{option}-missing")
+        if (script, option) not in OPTIONAL_VALUE:
+            yield pytest.param(script, lambda base, o=option: base + [o], option, id=f"{script}{option}-missing")
         if valid is not None:
             yield pytest.param(script, lambda base, o=option, v=valid: base + [o, v, o, v], option,
                                id=f"{script}{option}-twice")
-    for script in ("run_collection", "report", "compare_upstream", "python_vs_cli", "stage_table", "polygon_bench"):
+    for script in ("run_collection", "report", "compare_upstream", "python_vs_cli", "stage_table", "polygon_bench",
+                   "pipeline_bench"):
         for i, opt in enumerate(["--bogus", "-x", "--threads=", "---"]):
-            if script in ("compare_upstream", "python_vs_cli", "stage_table") and opt == "--threads=":
+            if script in ("compare_upstream", "python_vs_cli", "stage_table", "pipeline_bench") and opt == "--threads=":
                 continue  # covered above as an empty value
             yield pytest.param(script, lambda base, o=opt: base + [o], None, id=f"{script}-unknown-{i}")
     # Empty positional arguments.
@@ -164,6 +181,9 @@ def test_run_time_problems_are_messages_not_tracebacks(setup, tmp_path, capsys):
     ["python_vs_cli.py", ".", "--threads", "-1"],
     ["stage_table.py", "--threads", "1", "--threads", "2", "m.off"],
     ["polygon_bench.py", "--arrange", "/nonexistent/arrange"],
+    ["pipeline_bench.py", "--arrange", "/nonexistent/arrange"],
+    ["pipeline_bench.py", "--threads", "1,1", "--runs", "1"],
+    ["pipeline_bench.py", "--runs", "1", "--runs", "1"],
 ])
 def test_as_processes_exit_two_without_a_traceback(tmp_path, args):
     p = subprocess.run([sys.executable, str(BENCH / args[0]), *args[1:]], capture_output=True, text=True,
@@ -185,10 +205,45 @@ def test_the_thread_cap_is_the_cxx_one():
 
 
 def test_help_names_the_limits(capsys):
-    for main in (run_collection.main, compare_upstream.main, python_vs_cli.main, stage_table.main, polygon_bench.main):
+    for main in (run_collection.main, compare_upstream.main, python_vs_cli.main, stage_table.main, polygon_bench.main,
+                 pipeline_bench.main):
         with pytest.raises(SystemExit) as e:
             main(["--help"])
         assert e.value.code == 0
     out = capsys.readouterr().out
-    assert out.count(f"0 (all cores) to {cli_args.MAX_THREADS}") == 3
-    assert "models run at once, 1 to 1024" in out and out.count("given once") == 5
+    assert out.count(f"0 (all cores) to {cli_args.MAX_THREADS}") == 4
+    assert "models run at once, 1 to 1024" in out and out.count("given once") == 6
+
+
+def test_pipeline_bench_limits_missing_inputs_and_run_time_problems(tmp_path, capsys):
+    # A fake arrange printing --stats JSON, a cached generated mesh: values at the limits run
+    # (exit 0); a missing workload or reference table is reported, exit 1; an unwritable
+    # --json or --work exits 2 with a message.
+    stats = {"in_triangles": 4, "lpi": 2, "tpi": 1, "out_vertices": 9, "out_triangles": 12,
+             "intersecting_pairs": 3, "peak_rss_mb": 5.0,
+             **{f"t_{s}_s": 0.01 for s in ("load", "preprocess", "detect", "classify", "triangulate", "output",
+                                           "total")}}
+    arrange = tmp_path / "arrange"
+    arrange.write_text(f"#!/bin/sh\necho '{json.dumps(stats)}'\n")
+    arrange.chmod(0o755)
+    work = tmp_path / "work"
+    make_meshes(work / "generated", ["two_spheres.off"])
+    table = tmp_path / "PERFORMANCE.md"
+    table.write_text("| workload | OMC 1 thr s | OMC 2 thr s |\n|---|---|---|\n| generated two_spheres | 0.02 | > 600 |\n")
+    base = ["--arrange", str(arrange), "--work", str(work), "--meshes", str(tmp_path / "no_meshes")]
+    out = tmp_path / "out.jsonl"
+    assert pipeline_bench.main(base + ["--only", "two_spheres", "--threads", f"0,1,2,{cli_args.MAX_THREADS}",
+                                       "--runs", "1", "--timeout", "0", "--baseline", str(arrange),
+                                       "--json", str(out), "--reference-omc", str(table)]) == 0
+    text = capsys.readouterr().out
+    assert "| two_spheres | 4 | 3 | 0.010 |" in text and "1 thr ours/OMC" in text and "2 thr ours/OMC" in text
+    assert len(out.read_text().splitlines()) == 8  # 4 thread counts x 2 binaries
+    assert pipeline_bench.main(base + ["--only", "two_spheres,40509", "--runs", "1", "--threads", "1",
+                                       "--reference-omc", str(tmp_path / "none.md")]) == 1
+    text = capsys.readouterr().out
+    assert "| thingi10k/40509.stl | missing |" in text and "MISSING" in text and "none.md" in text
+    assert pipeline_bench.main(base + ["--only", "two", "--json", str(tmp_path / "no" / "o.jsonl")]) == 2
+    (tmp_path / "file").write_text("")
+    assert pipeline_bench.main(base[:2] + ["--only", "two", "--work", str(tmp_path / "file" / "w")]) == 2
+    err = capsys.readouterr().err
+    assert "o.jsonl" in err and "file" in err and "Traceback" not in err
