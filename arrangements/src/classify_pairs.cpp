@@ -1,12 +1,26 @@
 #include "arrangements/classify_pairs.h"
 
 #include <tbb/parallel_for.h>
+#include <tritri/counting_kernel.h>
+#include <tritri/double_kernel.h>
+#include <tritri/shared_vertices.h>
 
 #include "arrangements/classify_native.h"
 #include "arrangements/classify_tritri.h"
 #include "arrangements/predicate_counts.h"
 
 namespace arrangements {
+namespace {
+
+// Neighbours that meet only in what they share contribute nothing (both classifiers drop
+// such pairs): settled by 1 to 4 orient3d instead of a full classification.
+bool settled_as_neighbours(const std::vector<Vec3>& V, const Tri& a, const Tri& b, tritri::PredicateCounts* counts) {
+  const std::array<Vec3, 3> pa = {V[a[0]], V[a[1]], V[a[2]]}, pb = {V[b[0]], V[b[1]], V[b[2]]};
+  if (counts) return tritri::meet_only_in_shared(tritri::CountingKernel<tritri::DoubleKernel>(*counts), pa, a, pb, b);
+  return tritri::meet_only_in_shared(tritri::DoubleKernel{}, pa, a, pb, b);
+}
+
+}  // namespace
 
 std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
                                              const std::vector<std::pair<int, int>>& pairs,
@@ -24,6 +38,7 @@ std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const s
     PairIntersection record;
     const std::size_t end = std::min(pairs.size(), (c + 1) * chunk);
     for (std::size_t i = c * chunk; i < end; ++i) {
+      if (settled_as_neighbours(V, F[pairs[i].first], F[pairs[i].second], installed)) continue;
       bool hit = false;
       switch (classifier) {
         case Classifier::Native:

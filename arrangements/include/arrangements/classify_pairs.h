@@ -7,6 +7,10 @@
 //          classifier; threads (<= 0: all cores).
 // Output:  one PairIntersection per intersecting pair, in the order of `pairs`
 //          (deterministic for any number of threads).
+// Neighbours first: a pair that shares a vertex or an edge (by index; V is merged) and
+// provably meets only there (tritri::meet_only_in_shared, 1 to 4 exact orient3d) is
+// dropped without classification, as the classifier would drop it; most candidate pairs
+// of a mesh are such neighbours. With `counts`, their orient3d calls are counted too.
 // Cost: O(#pairs) classifications, parallel.
 #pragma once
 
