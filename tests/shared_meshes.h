@@ -1,12 +1,18 @@
 // Where tests find data that is not part of the project:
 //   shared_meshes_dir()  the shared mesh collection (../shared/meshes beside the checkout;
-//                        override with the environment variable TRITRI_MESHES_DIR); tests
-//                        that need it call GTEST_SKIP when it does not exist
+//                        override with the environment variable TRITRI_MESHES_DIR)
+//   TRITRI_REQUIRE_DATA(path)  in a test that needs `path`: when it does not exist, the test
+//                        fails in CI (environment CI=true, as .ci/run runs, or
+//                        TRITRI_REQUIRE_SHARED_MESHES=1) and is skipped elsewhere, so a
+//                        green CI run never means "not run"
 //   bad_input_dir()      tests/bad_input, small hand-written files that must be refused
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cstdlib>
 #include <filesystem>
+#include <string_view>
 
 namespace tritri_test {
 
@@ -15,6 +21,22 @@ inline std::filesystem::path shared_meshes_dir() {
   // __FILE__ is <checkout>/tests/shared_meshes.h.
   return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "shared" / "meshes";
 }
+
+inline bool shared_meshes_required() {
+  const char* ci = std::getenv("CI");
+  const char* req = std::getenv("TRITRI_REQUIRE_SHARED_MESHES");
+  return (ci && std::string_view(ci) == "true") || (req && std::string_view(req) == "1");
+}
+
+#define TRITRI_REQUIRE_DATA(path)                                                               \
+  do {                                                                                          \
+    if (!std::filesystem::exists(path)) {                                                       \
+      if (tritri_test::shared_meshes_required()) {                                              \
+        FAIL() << "missing test data (required in CI): " << (path);                             \
+      }                                                                                         \
+      GTEST_SKIP() << "no test data at " << (path);                                             \
+    }                                                                                           \
+  } while (0)
 
 inline std::filesystem::path bad_input_dir() { return std::filesystem::path(__FILE__).parent_path() / "bad_input"; }
 

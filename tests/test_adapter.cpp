@@ -246,9 +246,11 @@ void check_case(const Case& c) {
     EXPECT_EQ(got, want) << "got:\n" << str(got) << "want:\n" << str(want);
     // New points never repeat an input vertex.
     for (const auto& p : rec.points)
-      if (p.vertex < 0)
-        if (const auto x = point_of(Vx, F, p))
+      if (p.vertex < 0) {
+        if (const auto x = point_of(Vx, F, p)) {
           for (const Vec3& v : Vx) EXPECT_NE(*x, exact(v)) << "an LPI at an input vertex";
+        }
+      }
   }
 }
 

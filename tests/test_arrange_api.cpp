@@ -129,7 +129,9 @@ void expect_well_formed(const EigenArrangement& a, const Scene& s, const std::st
           << what << ": V(" << v << ", " << c << ") is not the nearest double";
     }
     EXPECT_EQ(bool(a.V_is_exact(v)), equal) << what << ": V_is_exact(" << v << ")";
-    if (a.exact_vertices[v].is_explicit()) EXPECT_EQ(inputs.count(p), 1u) << what << ": explicit vertex " << v;
+    if (a.exact_vertices[v].is_explicit()) {
+      EXPECT_EQ(inputs.count(p), 1u) << what << ": explicit vertex " << v;
+    }
   }
   // labels: sorted sets that contain the label of the source row.
   for (int f = 0; f < nf; ++f) {
@@ -288,8 +290,9 @@ TEST(ArrangeApi, HandScenesCountsPointsAndTiling) {
       EXPECT_EQ(fresh, h.fresh) << what;
       EXPECT_TRUE(a.stats.intersection_points == h.fresh.size() && a.stats.tpi == 0) << what;
       EXPECT_EQ(a.stats.classifier, name_of(c));
-      if (h.scene.labels.size() == 0)
+      if (h.scene.labels.size() == 0) {
         for (const auto& l : a.labels) EXPECT_EQ(l, std::vector<int>{0}) << what;  // no labels: all 0
+      }
     }
 }
 

@@ -203,7 +203,7 @@ TEST(CandidatePairs, EqualsBruteForceOnRealMeshes) {
   // box.STL: axis-aligned faces whose flat boxes only touch, on the parallel path.
   for (const char* name : {"cherchi_arrangements/two_spheres.stl", "libigl_tutorial/bunny.off", "trimesh/box.STL"}) {
     const std::filesystem::path file = tritri_test::shared_meshes_dir() / name;
-    if (!std::filesystem::exists(file)) GTEST_SKIP() << "no " << file;
+    TRITRI_REQUIRE_DATA(file);
     const arrangements::TriangleSoup s = arrangements::load_triangle_soup(file.string());
     const Pairs expected = brute_force_pairs(s.vertices, s.triangles);
     ASSERT_GT(expected.size(), s.triangles.size()) << name;  // neighbours share vertices: many pairs

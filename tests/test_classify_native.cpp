@@ -106,8 +106,11 @@ void check_pair(const Vec3 (&p)[6], long& compared, long& intersecting) {
   for (const auto& q : rec.points) {
     const bool on_vertex = q.in[0].kind == Location::Vertex || q.in[1].kind == Location::Vertex;
     EXPECT_EQ(q.vertex >= 0, on_vertex);
-    if (q.in[0].kind == Location::Vertex) EXPECT_EQ(q.vertex, a[q.in[0].id]);
-    else if (q.in[1].kind == Location::Vertex) EXPECT_EQ(q.vertex, b[q.in[1].id]);
+    if (q.in[0].kind == Location::Vertex) {
+      EXPECT_EQ(q.vertex, a[q.in[0].id]);
+    } else if (q.in[1].kind == Location::Vertex) {
+      EXPECT_EQ(q.vertex, b[q.in[1].id]);
+    }
   }
 }
 

@@ -358,12 +358,11 @@ TEST(ImplicitPredicates, EqualAndLessMatchExactReference) {
     long long n = 0;
     for (; n < 200 && n < left; ++n) {
       int idx[2] = {pick.any(), pick.any()};
-      bool found = false;
-      switch (rng.uniform(0, 5)) {
+      switch (rng.uniform(0, 5)) {  // a group member when there is one, else the random pair
         case 0:
-        case 1: found = pick.from_group(GroupKind::Coincident, 2, 0, idx); break;
-        case 2: found = pick.from_group(GroupKind::Coplanar, 2, 0, idx); break;  // ties on axis planes
-        case 3: found = pick.from_group(GroupKind::Collinear, 2, 0, idx); break;  // ties on axis lines
+        case 1: pick.from_group(GroupKind::Coincident, 2, 0, idx); break;
+        case 2: pick.from_group(GroupKind::Coplanar, 2, 0, idx); break;  // ties on axis planes
+        case 3: pick.from_group(GroupKind::Collinear, 2, 0, idx); break;  // ties on axis lines
         default: break;
       }
       const auto& a = s.points[idx[0]];

@@ -209,7 +209,7 @@ TEST(IntersectionGraph, GridThroughSpheres) {
 
 TEST(IntersectionGraph, SmallSharedMeshes) {
   const std::filesystem::path dir = tritri_test::shared_meshes_dir();
-  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared meshes";
+  TRITRI_REQUIRE_DATA(dir);
   int checked = 0;
   for (const char* name : {"cherchi_arrangements/two_spheres.stl", "cherchi_arrangements/three_cubes.stl",
                            "cgal_data/mask_cone.off", "trimesh/soup.stl"}) {
@@ -231,7 +231,7 @@ TEST(IntersectionGraph, SmallSharedMeshes) {
 // TRITRI_TEST_SCALE are skipped, so that sanitizer runs stay short).
 TEST(IntersectionGraph, EverySharedMeshLoadsAndClassifies) {
   const std::filesystem::path dir = tritri_test::shared_meshes_dir();
-  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no shared meshes";
+  TRITRI_REQUIRE_DATA(dir);
   const char* scale_env = std::getenv("TRITRI_TEST_SCALE");
   const double scale = scale_env ? std::atof(scale_env) : 1.0;
   const std::size_t max_triangles = static_cast<std::size_t>(130000 * scale);

@@ -463,7 +463,7 @@ bool is_mesh_extension(std::string ext) {
 // differ).
 TEST(SharedMeshes, EveryMeshFileLoadsOrIsRefusedWithInputErrorAndMatchesTheManifest) {
   const fs::path root = tritri_test::shared_meshes_dir();
-  if (!fs::is_directory(root)) GTEST_SKIP() << "no shared mesh folder at " << root;
+  TRITRI_REQUIRE_DATA(root);
   const std::map<std::string, ManifestRow> manifest = read_manifest(root / "manifest.csv");
   std::vector<fs::path> files;
   for (const auto& entry : fs::recursive_directory_iterator(root))

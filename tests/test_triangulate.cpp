@@ -559,7 +559,7 @@ TEST(Arrangement, IndependentCheckRefusesBadMeshes) {
 // Every shared mesh up to a size limit, both classifiers.
 TEST(Arrangement, SharedMeshesPassCheckArrangement) {
   const fs::path dir = tritri_test::shared_meshes_dir();
-  if (!fs::exists(dir)) GTEST_SKIP() << "no shared meshes at " << dir;
+  TRITRI_REQUIRE_DATA(dir);
   const std::size_t max_triangles = static_cast<std::size_t>(20000 * test_scale());
   std::vector<fs::path> files;
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {
@@ -670,7 +670,7 @@ TEST(Triangulate, TilingCheckRefusesWrongOutput) {
 // independent all-pairs check of the output.
 TEST(Triangulate, SmallSharedConfigurationsPassAllExactChecks) {
   const fs::path dir = tritri_test::shared_meshes_dir() / "cherchi_arrangements";
-  if (!fs::exists(dir)) GTEST_SKIP() << "no shared meshes at " << dir;
+  TRITRI_REQUIRE_DATA(dir);
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(dir)) files.push_back(entry.path());
   std::sort(files.begin(), files.end());
@@ -1056,9 +1056,10 @@ TEST(Arrange, CoplanarEdgeCrossingsAreProperLPIs) {
         expected_edges.push_back({lift(i), lift((i + 1) % 3), lift(3 + j), lift(3 + (j + 1) % 3)});
       }
     ASSERT_EQ(expected.size(), 6u) << "the scene is not a star";
-    if (star == &kIntegerStar)  // the derivation agrees with the crossings read off by hand
+    if (star == &kIntegerStar) {  // the derivation agrees with the crossings read off by hand
       EXPECT_TRUE(expected.count({Q(4), Q(0), Q(4)}) && expected.count({Q(8), Q(8), Q(24)}) &&
                   expected.count({Q(2), Q(4), Q(10)}) && expected.count({Q(10), Q(4), Q(18)}));
+    }
     for (Classifier c : kClassifiers) {
       ArrangeOptions o;
       o.classifier = c;

@@ -344,7 +344,9 @@ TEST_F(TritriCompare, ThreadCountsUpToTheCapRun) {
     const CliRun r = compare(good + " --json --repeat 2 --max-differences 0 --threads " + std::to_string(t));
     EXPECT_EQ(r.status, 0) << t << ": " << r.err;
     EXPECT_EQ(raw_value(r.out, "agree"), "true") << r.out;
-    if (t > 0) EXPECT_EQ(integer(raw_value(r.out, "tritri"), "threads"), t);
+    if (t > 0) {
+      EXPECT_EQ(integer(raw_value(r.out, "tritri"), "threads"), t);
+    }
   }
   EXPECT_NE(compare("--help").out.find("to " + std::to_string(arrangements::kMaxThreads)), std::string::npos);
 }

@@ -10,7 +10,10 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <boost/geometry.hpp>
+// Boost 1.81's R-tree includes a header Boost itself has deprecated: not ours to fix.
+#define BOOST_ALLOW_DEPRECATED_HEADERS
+#include <boost/geometry/geometries/box.hpp>
+#include <boost/geometry/geometries/point.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <cmath>
 #include <map>

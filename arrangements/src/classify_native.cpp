@@ -228,8 +228,9 @@ class NativePair {
       p.lpi = make_lpi_key(a.id[self.id], a.id[next(self.id)], b.id[other.id], b.id[next(other.id)], -1 - b.tri);
     } else if (self.kind == Location::Edge && !(other.kind == Location::Edge && self_edge_in_other_plane)) {
       p.lpi = make_lpi_key(a.id[self.id], a.id[next(self.id)], b.id[0], b.id[1], b.id[2]);
-    } else {
-      p.lpi = make_lpi_key(b.id[other.id], b.id[next(other.id)], a.id[0], a.id[1], a.id[2]);
+    } else {  // then the other side's location is an edge (a new point lies on at least one)
+      const int e = other.id < 0 ? 0 : other.id;
+      p.lpi = make_lpi_key(b.id[e], b.id[next(e)], a.id[0], a.id[1], a.id[2]);
     }
     out_.points.push_back(p);
   }

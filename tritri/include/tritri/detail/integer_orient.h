@@ -47,14 +47,16 @@ bool to_integers(const double (&d)[N], int max_bits, std::int64_t (&m)[N]) noexc
   return true;
 }
 
-inline int sign128(__int128 v) noexcept { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
+__extension__ typedef __int128 int128;  // GCC / Clang builtin ; __extension__ keeps -Wpedantic quiet
+
+inline int sign128(int128 v) noexcept { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
 
 // Sign of det[u; v; w] for exact differences (u0 u1 u2 v0 v1 v2 w0 w1 w2); returns 2 when
 // they do not fit the integer window.
 inline int det3_sign_integer(const double (&d)[9]) noexcept {
   std::int64_t m[9];
   if (!to_integers<9>(d, 41, m)) return 2;
-  using I = __int128;
+  using I = int128;
   const I m0 = I(m[4]) * m[8] - I(m[5]) * m[7];
   const I m1 = I(m[5]) * m[6] - I(m[3]) * m[8];
   const I m2 = I(m[3]) * m[7] - I(m[4]) * m[6];
@@ -65,7 +67,7 @@ inline int det3_sign_integer(const double (&d)[9]) noexcept {
 inline int det2_sign_integer(const double (&d)[4]) noexcept {
   std::int64_t m[4];
   if (!to_integers<4>(d, 61, m)) return 2;
-  return sign128(__int128(m[0]) * m[3] - __int128(m[1]) * m[2]);
+  return sign128(int128(m[0]) * m[3] - int128(m[1]) * m[2]);
 }
 
 }  // namespace tritri::detail
