@@ -21,9 +21,11 @@
 #include "shared_meshes.h"
 #include "test_support.h"
 
-extern char** environ;
 
 namespace {
+
+using tritri_test::Exit;
+using tritri_test::spawn;
 
 namespace fs = std::filesystem;
 
@@ -87,47 +89,8 @@ TEST(ArrangeCli, StatsJsonHasTheContractKeys) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Hostile arguments, run without a shell so that empty arguments and spaces pass unchanged.
-
-struct Exit {
-  bool exited = false;  // ended by exit(), not by a signal
-  int code = -1;        // exit status (exited)
-  int signal = 0;       // the signal that ended it (!exited)
-  std::string out, err;
-};
-
-Exit spawn(const std::string& program, const std::vector<std::string>& args, const fs::path& dir) {
-  std::vector<std::string> all{program};
-  all.insert(all.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : all) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  Exit e;
-  pid_t pid = 0;
-  const int started = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (started != 0) {
-    ADD_FAILURE() << "cannot start " << program;
-    return e;
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  e.exited = WIFEXITED(status);
-  e.code = e.exited ? WEXITSTATUS(status) : -1;
-  e.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
-  auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  };
-  e.out = slurp(out);
-  e.err = slurp(err);
-  return e;
-}
+// Hostile arguments, run without a shell (tritri_test::spawn) so that empty arguments and
+// spaces pass unchanged.
 
 std::string shown(const std::vector<std::string>& args) {
   std::string s;

@@ -30,15 +30,8 @@ using arrangements::load_triangle_soup;
 using arrangements::Tri;
 using arrangements::TriangleSoup;
 using arrangements::Vec3;
+using tritri_test::bytes_of;
 using tritri_test::TempDir;
-
-template <class T>
-std::string bytes_of(T value, bool big_endian = false) {
-  std::string s(sizeof(T), '\0');
-  std::memcpy(s.data(), &value, sizeof(T));
-  if (big_endian) std::reverse(s.begin(), s.end());
-  return s;
-}
 
 // Replaces every "\n" of text by eol.
 std::string with_line_ends(const std::string& text, const std::string& eol) {

@@ -44,16 +44,8 @@ using arrangements::Tri;
 using arrangements::TriangleSoup;
 using arrangements::Vec3;
 
+using tritri_test::bytes_of;
 using tritri_test::TempDir;
-
-// Little / big endian encodings for hand-built binary files.
-template <class T>
-std::string bytes_of(T value, bool big_endian = false) {
-  std::string s(sizeof(T), '\0');
-  std::memcpy(s.data(), &value, sizeof(T));
-  if (big_endian) std::reverse(s.begin(), s.end());
-  return s;
-}
 
 std::string binary_stl(const std::string& header, const std::vector<std::array<float, 9>>& triangles) {
   std::string s = header;

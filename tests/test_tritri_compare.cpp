@@ -26,7 +26,6 @@
 #include "arrangements/write_off.h"
 #include "test_support.h"
 
-extern char** environ;
 
 namespace {
 
@@ -280,33 +279,13 @@ TEST_F(TritriCompare, HelpExitsWithZeroAndNamesTheContract) {
 // Runs the tool with exactly `args` (no shell: empty arguments pass unchanged); status 2 and
 // a message on stderr expected, no signal, nothing on stdout.
 void expect_usage_error(const std::vector<std::string>& args, const fs::path& dir) {
-  std::vector<std::string> all{COMPARE_BIN};
-  all.insert(all.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : all) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  const fs::path out = dir / "spawn_stdout.txt", err = dir / "spawn_stderr.txt";
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = 0;
-  const int started = posix_spawn(&pid, COMPARE_BIN, &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  ASSERT_EQ(started, 0);
-  int status = 0;
-  waitpid(pid, &status, 0);
+  const tritri_test::Exit e = tritri_test::spawn(COMPARE_BIN, args, dir);
   std::string shown;
   for (const auto& a : args) shown += "'" + a + "' ";
-  auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  };
-  const std::string text = slurp(err);
-  EXPECT_FALSE(WIFSIGNALED(status)) << shown << ": killed by signal " << WTERMSIG(status);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << shown << ": status " << status << ": " << text;
-  EXPECT_NE(text.find("tritri-compare: "), std::string::npos) << shown << ": " << text;
-  EXPECT_EQ(slurp(out), "") << shown;
+  EXPECT_TRUE(e.exited) << shown << ": killed by signal " << e.signal;
+  EXPECT_EQ(e.code, 2) << shown << ": " << e.err;
+  EXPECT_NE(e.err.find("tritri-compare: "), std::string::npos) << shown << ": " << e.err;
+  EXPECT_EQ(e.out, "") << shown;
 }
 
 TEST_F(TritriCompare, EveryHostileOptionValueIsAUsageError) {
