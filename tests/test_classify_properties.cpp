@@ -1,4 +1,5 @@
-// Properties of tritri::classify on generated pairs (DESIGN.md 3.5): swapping A and B
+// Properties of tritri::classify on generated pairs (docs/ARCHITECTURE.md, "Tests and
+// benchmarks"): swapping A and B
 // mirrors the types, rotating or reversing a triangle's vertex order renumbers ids by a
 // fixed table, and exact axis permutations, sign flips, dyadic translations and power-of-two
 // scalings change nothing. Also: CountingKernel is a transparent, deterministic wrapper.
