@@ -32,8 +32,10 @@ cmake --build build -j "$JOBS"
 ctest --test-dir build --output-on-failure --no-tests=error -j2
 
 echo "=== [2/5] Sanitizer build and tests (build-asan/)"
+# Warnings are not errors here: GCC 12 reports -Wmaybe-uninitialized inside libstdc++
+# (<regex>, <functional>) once sanitizer instrumentation changes inlining.
 configure build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRITRI_SANITIZE=ON \
-  -DTRITRI_BUILD_TESTS=ON -DTRITRI_BUILD_BENCH=OFF -DTRITRI_WERROR=ON
+  -DTRITRI_BUILD_TESTS=ON -DTRITRI_BUILD_BENCH=OFF -DTRITRI_WERROR=OFF
 cmake --build build-asan -j "$JOBS"
 TRITRI_TEST_SCALE=0.1 ctest --test-dir build-asan --output-on-failure --no-tests=error -j2
 
