@@ -132,6 +132,7 @@ Pairs overlapping_pairs_with_faces(const std::vector<Box>& boxes, std::span<cons
     else
       items.push_back({static_cast<int>(t)});
   }
+  const std::size_t first_face = items.size();  // items from here on are faces
   for (auto& [id, triangles] : faces_by_id) items.push_back(std::move(triangles));
   std::vector<Box> item_boxes;
   item_boxes.reserve(items.size());
@@ -140,13 +141,12 @@ Pairs overlapping_pairs_with_faces(const std::vector<Box>& boxes, std::span<cons
     for (int t : items[i]) b += boxes[t].bbox();
     item_boxes.emplace_back(b, static_cast<int>(i));
   }
-  std::vector<RTree> trees(items.size());
-  tbb::parallel_for(std::size_t(0), items.size(), [&](std::size_t i) {
-    if (items[i].size() < 2) return;
+  std::vector<RTree> trees(items.size() - first_face);  // one per face
+  tbb::parallel_for(first_face, items.size(), [&](std::size_t i) {
     std::vector<std::pair<RBox, int>> values;
     values.reserve(items[i].size());
     for (int t : items[i]) values.emplace_back(rbox(boxes[t]), t);
-    trees[i] = RTree(values.begin(), values.end());  // bulk loading (packing)
+    trees[i - first_face] = RTree(values.begin(), values.end());  // bulk loading (packing)
   });
   const Pairs item_pairs = overlapping_pairs(item_boxes, workers);
   tbb::enumerable_thread_specific<Pairs> found;
@@ -158,8 +158,9 @@ Pairs overlapping_pairs_with_faces(const std::vector<Box>& boxes, std::span<cons
       out.emplace_back(std::min(items[a][0], items[b][0]), std::max(items[a][0], items[b][0]));
       return;
     }
+    const RTree& tree = trees[b - first_face];  // b has two triangles or more: a face
     for (int t : items[a])
-      for (auto it = trees[b].qbegin(bgi::intersects(rbox(boxes[t]))); it != trees[b].qend(); ++it)
+      for (auto it = tree.qbegin(bgi::intersects(rbox(boxes[t]))); it != tree.qend(); ++it)
         out.emplace_back(std::min(t, it->second), std::max(t, it->second));
   });
   Pairs all;

@@ -82,21 +82,21 @@ void SoupBuilder::add_polygon(std::span<const int> corners) {
 }
 
 void SoupBuilder::finish() {
-  std::vector<Tri> polygon;
+  std::vector<Tri> split;  // one face's triangles
   for (std::size_t k = 0; k < polygon_start_.size(); ++k) {
     const std::size_t begin = polygon_start_[k];
     const std::size_t end = k + 1 < polygon_start_.size() ? polygon_start_[k + 1] : polygon_corners_.size();
-    polygon.clear();
+    split.clear();
     const bool certified =
-        triangulate_polygon(vertices, std::span<const int>(polygon_corners_.data() + begin, end - begin), polygon);
-    if (polygon.size() != end - begin - 2)
-      throw std::logic_error("triangulate_polygon returned " + std::to_string(polygon.size()) + " triangles for " +
+        triangulate_polygon(vertices, std::span<const int>(polygon_corners_.data() + begin, end - begin), split);
+    if (split.size() != end - begin - 2)
+      throw std::logic_error("triangulate_polygon returned " + std::to_string(split.size()) + " triangles for " +
                              std::to_string(end - begin) + " corners");
     const auto first = static_cast<std::ptrdiff_t>(polygon_triangle_[k]);
-    std::copy(polygon.begin(), polygon.end(), triangles.begin() + first);
+    std::copy(split.begin(), split.end(), triangles.begin() + first);
     if (certified) {  // its triangles cannot meet improperly: one id, no candidate pairs
-      if (this->polygon.empty()) this->polygon.assign(triangles.size(), -1);
-      std::fill_n(this->polygon.begin() + first, polygon.size(), static_cast<std::int64_t>(first));
+      if (polygon.empty()) polygon.assign(triangles.size(), -1);
+      std::fill_n(polygon.begin() + first, split.size(), static_cast<std::int64_t>(first));
     }
   }
   std::vector<int>().swap(polygon_corners_);
