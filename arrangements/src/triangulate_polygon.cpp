@@ -91,6 +91,18 @@ bool triangulate_simple_projection(const std::vector<Vec3>& V, std::span<const i
   for (std::size_t i = 0; i < n; ++i)
     if (!cdt.is_edge(handle[i], handle[(i + 1) % n], f, e)) return false;
 
+  // The polygon's orientation in the projection, exactly: at its lexicographically
+  // smallest corner the boundary turns convexly (simple polygons only).
+  std::size_t m = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (points[i].first < points[m].first) m = i;
+  const K::Point_2 &u = points[(m + n - 1) % n].first, &v = points[m].first, &w = points[(m + 1) % n].first;
+  const tritri::Sign orient = tritri::orient2d(u.x(), u.y(), v.x(), v.y(), w.x(), w.y());
+  if (fan_is_valid(V, corners, axis, 0, orient)) {  // the fan upstream and older files use
+    fan(corners, out);
+    return true;
+  }
+
   // Inside: faces reached from the infinite face by crossing an odd number of constraints.
   for (auto fh = cdt.all_faces_begin(); fh != cdt.all_faces_end(); ++fh) fh->info() = -1;
   std::deque<std::pair<Cdt::Face_handle, int>> todo = {{cdt.infinite_face(), 0}};
@@ -108,25 +120,12 @@ bool triangulate_simple_projection(const std::vector<Vec3>& V, std::span<const i
         todo.emplace_front(g, depth);
     }
   }
-  // The polygon's orientation in the projection, exactly: at its lexicographically
-  // smallest corner the boundary turns convexly (simple polygons only).
-  std::size_t m = 0;
-  for (std::size_t i = 1; i < n; ++i)
-    if (points[i].first < points[m].first) m = i;
-  const K::Point_2 &u = points[(m + n - 1) % n].first, &v = points[m].first, &w = points[(m + 1) % n].first;
-  const tritri::Sign orient = tritri::orient2d(u.x(), u.y(), v.x(), v.y(), w.x(), w.y());
-  if (fan_is_valid(V, corners, axis, 0, orient)) {  // the fan upstream and older files use
-    fan(corners, out);
-    return true;
-  }
-  const double sign = orient == tritri::Sign::Negative ? -1 : 1;
-
   std::vector<Tri> inside;
   inside.reserve(n - 2);
   for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
     if (fh->info() % 2 == 0) continue;
     Tri t = {corners[fh->vertex(0)->info()], corners[fh->vertex(1)->info()], corners[fh->vertex(2)->info()]};
-    if (sign < 0) std::swap(t[1], t[2]);  // CGAL's faces are counterclockwise
+    if (orient == tritri::Sign::Negative) std::swap(t[1], t[2]);  // CGAL's faces are counterclockwise
     inside.push_back(t);
   }
   if (inside.size() != n - 2) return false;  // cannot happen for a simple boundary
