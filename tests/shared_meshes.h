@@ -18,8 +18,9 @@ namespace tritri_test {
 
 inline std::filesystem::path shared_meshes_dir() {
   if (const char* dir = std::getenv("TRITRI_MESHES_DIR")) return dir;
-  // __FILE__ is <checkout>/tests/shared_meshes.h.
-  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "shared" / "meshes";
+  // TRITRI_TESTS_DIR (tests/CMakeLists.txt) is <checkout>/tests, absolute (__FILE__ may be
+  // relative, e.g. under ccache's base_dir).
+  return std::filesystem::path(TRITRI_TESTS_DIR).parent_path().parent_path() / "shared" / "meshes";
 }
 
 inline bool shared_meshes_required() {
@@ -38,6 +39,6 @@ inline bool shared_meshes_required() {
     }                                                                                           \
   } while (0)
 
-inline std::filesystem::path bad_input_dir() { return std::filesystem::path(__FILE__).parent_path() / "bad_input"; }
+inline std::filesystem::path bad_input_dir() { return std::filesystem::path(TRITRI_TESTS_DIR) / "bad_input"; }
 
 }  // namespace tritri_test

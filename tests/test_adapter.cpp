@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
-#include "arrangements/auxiliary_point.h"
-#include "arrangements/classify_native.h"
-#include "arrangements/classify_tritri.h"
+#include "support/auxiliary_point.h"
+#include "stages/3_classify_native.h"
+#include "stages/3_classify_tritri.h"
 
 namespace {
 

@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <arrangements/arrange.h>
-#include <arrangements/candidate_pairs.h>
+#include "stages/2_candidate_pairs.h"
 #include <arrangements/thread_count.h>
 #include <arrangements/load_triangle_soup.h>
-#include <arrangements/mesh_generators.h>
+#include "support/mesh_generators.h"
 
 #include <algorithm>
 #include <cmath>

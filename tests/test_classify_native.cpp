@@ -12,7 +12,7 @@
 #include <random>
 #include <set>
 
-#include "arrangements/classify_native.h"
+#include "stages/3_classify_native.h"
 
 namespace {
 

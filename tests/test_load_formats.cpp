@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <arrangements/load_triangle_soup.h>
-#include <arrangements/triangulate_polygon.h>
+#include "io/triangulate_polygon.h"
 
 #include <algorithm>
 #include <cmath>

@@ -12,7 +12,7 @@
 #include <unistd.h>
 
 #include <arrangements/load_triangle_soup.h>
-#include <arrangements/triangulate_polygon.h>
+#include "io/triangulate_polygon.h"
 
 #include <algorithm>
 #include <array>

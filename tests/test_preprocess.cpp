@@ -12,7 +12,7 @@
 // Expected values are written by hand or computed by the naive reference.
 #include <gtest/gtest.h>
 
-#include <arrangements/preprocess.h>
+#include "stages/1_preprocess.h"
 
 #include <algorithm>
 #include <array>

@@ -11,7 +11,7 @@
 //   naming the matrix.
 #include <gtest/gtest.h>
 
-#include <arrangements/mesh_generators.h>
+#include "support/mesh_generators.h"
 #include <tbb/task_arena.h>
 #include <tritri/classify.h>
 #include <tritri/double_kernel.h>

@@ -41,20 +41,19 @@
 #include <utility>
 #include <vector>
 
-#include "arrangements/arrange.h"
-#include "arrangements/candidate_pairs.h"
+#include "pipeline.h"
+#include "stages/2_candidate_pairs.h"
 #include "arrangements/check_arrangement.h"
-#include "arrangements/classify_pairs.h"
+#include "stages/3_classify_pairs.h"
 #include "arrangements/input_error.h"
-#include "arrangements/intersection_graph.h"
+#include "stages/4_intersection_graph.h"
 #include "arrangements/load_triangle_soup.h"
-#include "arrangements/mesh_counts.h"
-#include "arrangements/mesh_generators.h"
+#include "support/mesh_counts.h"
+#include "support/mesh_generators.h"
 #include "arrangements/output_mesh.h"
-#include "arrangements/preprocess.h"
-#include "arrangements/propagate_coplanar.h"
+#include "stages/1_preprocess.h"
 #include "arrangements/triangle_soup.h"
-#include "arrangements/triangulate.h"
+#include "stages/5_triangulate.h"
 #include "arrangements/write_mesh.h"
 #include "shared_meshes.h"
 
@@ -246,7 +245,6 @@ Pipeline run_pipeline(const TriangleSoup& input, Classifier classifier) {
   const auto& F = p.soup.triangles;
   const auto records = classify_pairs(V, F, candidate_pairs(V, F), classifier);
   p.graph = build_intersection_graph(V, F, records);
-  propagate_coplanar(V, F, p.graph);
   p.tr = triangulate(p.soup, p.graph);
   return p;
 }
@@ -718,15 +716,13 @@ TEST(Triangulate, GraphCheckRefusesMissingPieces) {
 // And through arrange(): every graph point's exact position is an output vertex.
 TEST(Arrange, KeptGraphPointsAreOutputVertices) {
   for (const auto& [name, soup] : generated_scenes()) {
-    ArrangeOptions o;
-    o.keep_graph = true;
-    const ArrangeResult r = arrange(soup, o);
-    ASSERT_TRUE(r.graph.has_value() && r.soup.has_value()) << name;
+    PipelineInternals kept;
+    const ArrangeResult r = run_pipeline(soup, ArrangeOptions{}, &kept);
     std::set<Q3> out;
     for (const ImplicitPoint& v : r.mesh.vertices) out.insert(exact(v));
-    for (std::size_t i = r.graph->num_input_vertices; i < r.graph->points.size(); ++i)
-      EXPECT_EQ(out.count(exact(r.graph->points[i])), 1u) << name << ": intersection point " << i;
-    for (const Vec3& v : r.soup->vertices) EXPECT_EQ(out.count(exact(v)), 1u) << name << ": input vertex";
+    for (std::size_t i = kept.graph.num_input_vertices; i < kept.graph.points.size(); ++i)
+      EXPECT_EQ(out.count(exact(kept.graph.points[i])), 1u) << name << ": intersection point " << i;
+    for (const Vec3& v : kept.soup.vertices) EXPECT_EQ(out.count(exact(v)), 1u) << name << ": input vertex";
     // Provenance maps back to the input numbering: the output triangle lies in the input
     // triangle whose source is source[t] (coplanar and inside, exactly).
     std::map<std::int64_t, std::size_t> by_source;
@@ -1063,9 +1059,9 @@ TEST(Arrange, CoplanarEdgeCrossingsAreProperLPIs) {
     for (Classifier c : kClassifiers) {
       ArrangeOptions o;
       o.classifier = c;
-      o.keep_graph = true;
-      const ArrangeResult r = arrange(star->soup(), o);
-      const IntersectionGraph& g = *r.graph;
+      PipelineInternals kept;
+      const ArrangeResult r = run_pipeline(star->soup(), o, &kept);
+      const IntersectionGraph& g = kept.graph;
       ASSERT_EQ(g.points.size() - g.num_input_vertices, 6u) << name_of(c);
       std::set<Q3> got;
       for (std::size_t i = g.num_input_vertices; i < g.points.size(); ++i) {

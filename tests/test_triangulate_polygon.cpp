@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "arrangements/triangulate_polygon.h"
+#include "io/triangulate_polygon.h"
 
 namespace {
 

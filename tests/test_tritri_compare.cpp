@@ -2,7 +2,7 @@
 // CMake) on generated meshes written to a temporary folder: exit codes, the JSON contract,
 // the injected disagreement, several files as one model, and refused input. The reported
 // number of intersection points is checked against the pipeline run in this process
-// (arrangements::arrange with keep_graph, both classifiers) and, for a two-triangle model,
+// (arrangements::run_pipeline keeping the graph, both classifiers) and, for a two-triangle model,
 // against a count derived by hand. Hostile option values (every option, table-driven) are
 // usage errors: exit status 2 and a message, never a signal.
 #include <fcntl.h>
@@ -19,11 +19,11 @@
 #include <string>
 #include <vector>
 
-#include "arrangements/arrange.h"
+#include "pipeline.h"
 #include "arrangements/load_triangle_soup.h"
-#include "arrangements/mesh_generators.h"
+#include "support/mesh_generators.h"
 #include "arrangements/thread_count.h"
-#include "arrangements/write_off.h"
+#include "io/write_off.h"
 #include "test_support.h"
 
 
@@ -154,14 +154,13 @@ class TritriCompare : public ::testing::Test {
     // The same model through the pipeline in this process.
     const TriangleSoup input = load_triangle_soups(files);
     ArrangeOptions options;
-    options.keep_graph = true;
     options.threads = 2;
     for (Classifier c : {Classifier::Native, Classifier::Tritri}) {
       options.classifier = c;
-      const ArrangeResult res = arrange(input, options);
-      ASSERT_TRUE(res.graph.has_value());
+      PipelineInternals internals;
+      const ArrangeResult res = run_pipeline(input, options, &internals);
       const long long new_points =
-          static_cast<long long>(res.graph->points.size()) - res.graph->num_input_vertices;
+          static_cast<long long>(internals.graph.points.size()) - internals.graph.num_input_vertices;
       EXPECT_EQ(integer(j, "intersection_points"), new_points) << (c == Classifier::Native ? "native" : "tritri");
       const std::string obj = raw_value(j, c == Classifier::Native ? "native" : "tritri");
       EXPECT_EQ(integer(obj, "out_vertices"), static_cast<long long>(res.mesh.vertices.size()));

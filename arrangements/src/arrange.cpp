@@ -1,4 +1,4 @@
-#include "arrangements/arrange.h"
+#include "pipeline.h"
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>
@@ -10,14 +10,14 @@
 #include <stdexcept>
 #include <string>
 
-#include "arrangements/candidate_pairs.h"
+#include "stages/2_candidate_pairs.h"
+#include "stages/3_classify_pairs.h"
 #include "arrangements/input_error.h"
-#include "arrangements/process_usage.h"
-#include "arrangements/mesh_counts.h"
-#include "arrangements/preprocess.h"
-#include "arrangements/propagate_coplanar.h"
+#include "support/process_usage.h"
+#include "support/mesh_counts.h"
+#include "stages/1_preprocess.h"
 #include "arrangements/thread_count.h"
-#include "arrangements/triangulate.h"
+#include "stages/5_triangulate.h"
 
 namespace arrangements {
 namespace {
@@ -62,7 +62,7 @@ OutputMesh make_output(const TriangleSoup& soup, Triangulation&& tr, int scale_e
 
 }  // namespace
 
-ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) {
+ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& options, PipelineInternals* keep) {
   if (options.threads > kMaxThreads)  // oneTBB crashes or aborts on huge arenas (thread_count.h)
     throw std::invalid_argument("arrange: threads must be at most " + std::to_string(kMaxThreads) + ", got " +
                                 std::to_string(options.threads));
@@ -98,7 +98,6 @@ ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) 
   s.orient3d_calls = counts.orient3d;
   s.orient2d_calls = counts.orient2d;
   IntersectionGraph graph = build_intersection_graph(soup.vertices, soup.triangles, records);
-  propagate_coplanar(soup.vertices, soup.triangles, graph);
   s.t_classify_s = seconds_since(t0);
   s.intersecting_pairs = graph.intersecting_pairs;
   s.coplanar_pairs = graph.coplanar_pairs;
@@ -120,13 +119,17 @@ ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) 
   s.euler = c.euler;
   s.t_output_s = seconds_since(t0);
 
-  if (options.keep_graph) {
-    r.soup = std::move(soup);
-    r.graph = std::move(graph);
+  if (keep) {
+    keep->soup = std::move(soup);
+    keep->graph = std::move(graph);
   }
   s.t_total_s = seconds_since(start);
   s.peak_rss_mb = peak_rss_mb();
   return r;
+}
+
+ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) {
+  return run_pipeline(input, options, nullptr);
 }
 
 }  // namespace arrangements

@@ -19,7 +19,7 @@
 #include "arrangements/arrange.h"
 #include "arrangements/check_arrangement.h"
 #include "arrangements/input_error.h"
-#include "arrangements/process_usage.h"
+#include "support/process_usage.h"
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/stats_json.h"
 #include "arrangements/thread_count.h"

@@ -8,9 +8,9 @@
 #include <string>
 #include <string_view>
 
-#include "arrangements/mesh_generators.h"
+#include "support/mesh_generators.h"
 #include "arrangements/thread_count.h"
-#include "arrangements/write_off.h"
+#include "io/write_off.h"
 
 namespace {
 

@@ -17,10 +17,10 @@
 
 #include <tritri/implicit_predicates.h>
 
-#include "arrangements/arrange.h"
+#include "pipeline.h"
 #include "arrangements/input_error.h"
 #include "arrangements/load_triangle_soup.h"
-#include "arrangements/process_usage.h"
+#include "support/process_usage.h"
 #include "arrangements/stats_json.h"
 #include "arrangements/thread_count.h"
 
@@ -166,12 +166,12 @@ int main(int argc, char** argv) {
     ArrangeOptions options;
     options.threads = threads;
     options.scale = scale;
-    options.keep_graph = true;
     options.count_predicates = true;
     options.classifier = Classifier::Native;
-    ArrangeResult native = arrange(input, options);
+    PipelineInternals native_internals, tritri_internals;
+    ArrangeResult native = run_pipeline(input, options, &native_internals);
     options.classifier = Classifier::Tritri;
-    ArrangeResult tritri_run = arrange(input, options);
+    ArrangeResult tritri_run = run_pipeline(input, options, &tritri_internals);
     // Repeated runs, alternating, keep each stage's fastest time (less noise on a busy
     // machine); the results themselves are deterministic.
     auto keep_min = [](ArrangeStats& best, const ArrangeStats& s) {
@@ -181,7 +181,6 @@ int main(int argc, char** argv) {
     };
     for (int r = 1; r < repeat; ++r) {
       ArrangeOptions timing = options;
-      timing.keep_graph = false;
       timing.classifier = Classifier::Native;
       keep_min(native.stats, arrange(input, timing).stats);
       timing.classifier = Classifier::Tritri;
@@ -189,8 +188,8 @@ int main(int argc, char** argv) {
     }
     native.stats.t_load_s = tritri_run.stats.t_load_s = t_load;
 
-    IntersectionGraph& gn = *native.graph;
-    IntersectionGraph& gt = *tritri_run.graph;
+    IntersectionGraph& gn = native_internals.graph;
+    IntersectionGraph& gt = tritri_internals.graph;
     if (inject && gt.points.size() > static_cast<std::size_t>(gt.num_input_vertices)) {
       gt.points.pop_back();
       const int dropped = static_cast<int>(gt.points.size());
@@ -202,7 +201,7 @@ int main(int argc, char** argv) {
     auto differ = [&](std::string what) {
       if (differences.size() < max_differences) differences.push_back(std::move(what));
     };
-    if (native.soup->vertices != tritri_run.soup->vertices || native.soup->triangles != tritri_run.soup->triangles)
+    if (native_internals.soup.vertices != tritri_internals.soup.vertices || native_internals.soup.triangles != tritri_internals.soup.triangles)
       throw std::logic_error("the two runs preprocessed the input differently");
 
     // Points, as exact sets.

@@ -9,35 +9,35 @@
 //                  indices (otherwise std::invalid_argument)
 //          options classifier, threads (<= 0: all cores; at most kMaxThreads, see
 //                  thread_count.h, else std::invalid_argument; the caller's TBB arena
-//                  limit also applies), scale (exact power-of-two scaling, see preprocess.h),
-//                  keep_graph (keep the intersection graph and preprocessed soup in the
-//                  result, for comparisons), count_predicates (count the classification
-//                  stage's orient3d / orient2d calls; costs a thread-local load per call)
+//                  limit also applies), scale (exact power-of-two scaling by the
+//                  preprocessing), count_predicates (count the classification stage's
+//                  orient3d / orient2d calls)
 // Output:  ArrangeResult: the output mesh (in the input's coordinates, also with scale:
-//          its points are rebuilt from the unscaled defining points, exactly), the
-//          statistics (counts and stage times), and
-//          optionally the preprocessed soup and the intersection graph.
+//          its points are rebuilt from the unscaled defining points, exactly) and the
+//          statistics (counts and stage times; arrange_stats.h lists them).
+// The stages themselves are internal (arrangements/src/stages/, in the order they run;
+// docs/ARCHITECTURE.md describes each one's contract).
 // A soup with no triangle left after preprocessing (all degenerate, or none at all) is
 // valid: its arrangement is empty. Valid input is never refused.
 // Exact throughout; deterministic for any number of threads.
 #pragma once
 
 #include <cstddef>
-#include <optional>
 #include <string>
 
-#include "arrangements/classify_pairs.h"
-#include "arrangements/intersection_graph.h"
 #include "arrangements/output_mesh.h"
 #include "arrangements/triangle_soup.h"
 
 namespace arrangements {
 
+// Native: the 2020 case analysis; Tritri: tritri::classify through the adapter. Both give
+// the same arrangement; they differ in speed and in the predicates they call.
+enum class Classifier { Native, Tritri };
+
 struct ArrangeOptions {
   Classifier classifier = Classifier::Tritri;
   int threads = 0;
   bool scale = false;
-  bool keep_graph = false;
   bool count_predicates = false;  // fill orient3d_calls / orient2d_calls (classification)
 };
 
@@ -61,8 +61,6 @@ struct ArrangeStats {
 struct ArrangeResult {
   OutputMesh mesh;
   ArrangeStats stats;
-  std::optional<TriangleSoup> soup;        // preprocessed soup (keep_graph)
-  std::optional<IntersectionGraph> graph;  // its intersection graph (keep_graph)
 };
 
 ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options);

@@ -12,7 +12,7 @@
 //   V        #V by 3 matrix of vertex coordinates, finite (they are used exactly)
 //   F        #F by 3 matrix of triangle corners, indices into the rows of V (#F may be 0)
 //   options  ArrangeOptions (arrange.h): classifier (Tritri or Native), threads (<= 0:
-//            all cores), scale; keep_graph is ignored (always off here)
+//            all cores), scale, count_predicates
 //   labels   optional #F vector of labels >= 0, one per row of F (nullptr: all 0), e.g.
 //            the index of the mesh each triangle came from
 // Output: EigenArrangement
@@ -128,9 +128,7 @@ inline TriangleSoup eigen_soup(const Eigen::MatrixXd& V, const Eigen::MatrixXi& 
 
 inline EigenArrangement arrange(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ArrangeOptions& options,
                                 const Eigen::VectorXi* labels = nullptr) {
-  ArrangeOptions opts = options;
-  opts.keep_graph = false;
-  ArrangeResult result = arrange(detail::eigen_soup(V, F, labels), opts);
+  ArrangeResult result = arrange(detail::eigen_soup(V, F, labels), options);
   OutputMesh& mesh = result.mesh;
 
   EigenArrangement out;

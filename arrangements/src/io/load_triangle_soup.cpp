@@ -1,0 +1,186 @@
+// Stage 1: mesh file -> TriangleSoup (see load_triangle_soup.h): the file is read once, as
+// a stream, by the reader of its format (read_obj.cpp, read_off.cpp, read_stl.cpp,
+// read_ply.cpp), which validates it and fills a SoupBuilder in the same pass.
+#include "arrangements/load_triangle_soup.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "io/triangulate_polygon.h"
+#include "io/mesh_reader.h"
+
+namespace arrangements {
+
+const char* to_string(InputErrorKind kind) noexcept {
+  switch (kind) {
+    case InputErrorKind::unreadable_file: return "unreadable_file";
+    case InputErrorKind::unknown_format: return "unknown_format";
+    case InputErrorKind::unsupported_variant: return "unsupported_variant";
+    case InputErrorKind::malformed: return "malformed";
+    case InputErrorKind::non_finite_coordinate: return "non_finite_coordinate";
+    case InputErrorKind::index_out_of_range: return "index_out_of_range";
+    case InputErrorKind::too_few_corners: return "too_few_corners";
+    case InputErrorKind::empty_mesh: return "empty_mesh";
+    case InputErrorKind::too_large: return "too_large";
+  }
+  return "unknown";
+}
+
+namespace detail {
+
+FileBytes::FileBytes(const std::string& path) : path_(path) {
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) refuse(InputErrorKind::unreadable_file, path, "no such file");
+  if (!std::filesystem::is_regular_file(status)) refuse(InputErrorKind::unreadable_file, path, "not a regular file");
+  file_ = std::fopen(path.c_str(), "rb");
+  if (!file_) refuse(InputErrorKind::unreadable_file, path, std::string("cannot open the file: ") + std::strerror(errno));
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  size_ = ec ? 0 : static_cast<std::uint64_t>(size);
+  buffer_.resize(std::size_t{1} << 20);
+}
+
+FileBytes::~FileBytes() {
+  if (file_) std::fclose(file_);
+}
+
+std::size_t FileBytes::refill(std::size_t n) {
+  if (pos_ > 0) {  // keep the unconsumed bytes, at the front
+    std::memmove(buffer_.data(), buffer_.data() + pos_, end_ - pos_);
+    end_ -= pos_;
+    pos_ = 0;
+  }
+  if (n > buffer_.size()) buffer_.resize(std::max(n, 2 * buffer_.size()));
+  while (end_ < n && !eof_) {
+    const std::size_t got = std::fread(buffer_.data() + end_, 1, buffer_.size() - end_, file_);
+    end_ += got;
+    if (got == 0) {
+      if (std::ferror(file_)) refuse(InputErrorKind::unreadable_file, path_, "read error");
+      eof_ = true;
+    }
+  }
+  return end_;
+}
+
+void SoupBuilder::refuse_too_large(const char* what) const {
+  refuse(InputErrorKind::too_large, path_,
+         std::string("more than ") + std::to_string(kMaxIndexCount) + " " + what +
+             " (the pipeline's int indices allow no more)");
+}
+
+void SoupBuilder::add_polygon(std::span<const int> corners) {
+  if (corners.size() - 2 > kMaxIndexCount - triangles.size()) refuse_too_large("triangles");
+  polygon_start_.push_back(polygon_corners_.size());
+  polygon_triangle_.push_back(triangles.size());
+  polygon_corners_.insert(polygon_corners_.end(), corners.begin(), corners.end());
+  triangles.resize(triangles.size() + (corners.size() - 2));
+}
+
+void SoupBuilder::finish() {
+  std::vector<Tri> split;  // one face's triangles
+  for (std::size_t k = 0; k < polygon_start_.size(); ++k) {
+    const std::size_t begin = polygon_start_[k];
+    const std::size_t end = k + 1 < polygon_start_.size() ? polygon_start_[k + 1] : polygon_corners_.size();
+    split.clear();
+    const bool certified =
+        triangulate_polygon(vertices, std::span<const int>(polygon_corners_.data() + begin, end - begin), split);
+    if (split.size() != end - begin - 2)
+      throw std::logic_error("triangulate_polygon returned " + std::to_string(split.size()) + " triangles for " +
+                             std::to_string(end - begin) + " corners");
+    const auto first = static_cast<std::ptrdiff_t>(polygon_triangle_[k]);
+    std::copy(split.begin(), split.end(), triangles.begin() + first);
+    if (certified) {  // its triangles cannot meet improperly: one id, no candidate pairs
+      if (polygon.empty()) polygon.assign(triangles.size(), -1);
+      std::fill_n(polygon.begin() + first, split.size(), static_cast<std::int64_t>(first));
+    }
+  }
+  std::vector<int>().swap(polygon_corners_);
+  std::vector<std::size_t>().swap(polygon_start_);
+  std::vector<std::size_t>().swap(polygon_triangle_);
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::lowercase_extension;
+using detail::refuse;
+
+enum class Format { obj, off, stl, ply };
+
+Format format_of(const std::string& path) {
+  const std::string ext = lowercase_extension(path);
+  if (ext == ".obj") return Format::obj;
+  if (ext == ".off") return Format::off;
+  if (ext == ".stl") return Format::stl;
+  if (ext == ".ply") return Format::ply;
+  refuse(InputErrorKind::unknown_format, path,
+         (ext.empty() ? std::string("no file extension") : "unknown file extension '" + ext + "'") +
+             " (supported: .obj .off .stl .ply, any case)");
+}
+
+}  // namespace
+
+TriangleSoup load_triangle_soup(const std::string& path, std::uint32_t label) {
+  const Format format = format_of(path);
+  detail::FileBytes in(path);
+  if (in.size() == 0 && in.fill(1) == 0) refuse(InputErrorKind::empty_mesh, path, "the file is empty");
+  detail::SoupBuilder builder(path);
+  switch (format) {
+    case Format::obj: detail::read_obj(in, builder); break;
+    case Format::off: detail::read_off(in, builder); break;
+    case Format::stl: detail::read_stl(in, builder); break;
+    case Format::ply: detail::read_ply(in, builder); break;
+  }
+  if (builder.triangles.empty()) refuse(InputErrorKind::empty_mesh, path, "the mesh has no faces");
+  builder.finish();
+
+  TriangleSoup soup;
+  soup.vertices = std::move(builder.vertices);
+  soup.triangles = std::move(builder.triangles);
+  soup.labels.assign(soup.triangles.size(), 0);
+  soup.label_sets = {LabelSet{label}};
+  soup.source.resize(soup.triangles.size());
+  for (std::size_t t = 0; t < soup.source.size(); ++t) soup.source[t] = static_cast<std::int64_t>(t);
+  soup.polygon = std::move(builder.polygon);
+  return soup;
+}
+
+TriangleSoup load_triangle_soups(const std::vector<std::string>& paths) {
+  TriangleSoup all;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    TriangleSoup one = load_triangle_soup(paths[i], static_cast<std::uint32_t>(i));
+    if (i == 0) {  // labels 0, label_sets {{0}}, source 0..: as they are (no copy)
+      all = std::move(one);
+      continue;
+    }
+    if (all.vertices.size() + one.vertices.size() > detail::kMaxIndexCount ||
+        all.triangles.size() + one.triangles.size() > detail::kMaxIndexCount)
+      refuse(InputErrorKind::too_large, paths[i], "the input files together have more than " +
+                                                      std::to_string(detail::kMaxIndexCount) +
+                                                      " vertices or triangles");
+    const int offset = static_cast<int>(all.vertices.size());
+    const std::int64_t source_offset = static_cast<std::int64_t>(all.triangles.size());
+    all.vertices.insert(all.vertices.end(), one.vertices.begin(), one.vertices.end());
+    if (!one.polygon.empty() || !all.polygon.empty()) {  // ids are source indices: offset them too
+      all.polygon.resize(all.triangles.size(), -1);
+      for (std::size_t t = 0; t < one.triangles.size(); ++t)
+        all.polygon.push_back(one.polygon.empty() || one.polygon[t] < 0 ? -1 : source_offset + one.polygon[t]);
+    }
+    for (std::size_t t = 0; t < one.triangles.size(); ++t) {
+      const Tri& tri = one.triangles[t];
+      all.triangles.push_back({tri[0] + offset, tri[1] + offset, tri[2] + offset});
+      all.labels.push_back(static_cast<int>(i));
+      all.source.push_back(source_offset + one.source[t]);
+    }
+    all.label_sets.push_back(LabelSet{static_cast<std::uint32_t>(i)});
+  }
+  return all;
+}
+
+}  // namespace arrangements

@@ -1,0 +1,206 @@
+// arrangements/src/mesh_reader.h (internal to load_triangle_soup)
+//
+// The pieces of the one-pass mesh readers (read_obj.cpp, read_off.cpp, read_stl.cpp,
+// read_ply.cpp): each reads its file as a stream and validates and fills a SoupBuilder in
+// the same pass, so memory holds the parsed arrays plus one buffer of the file.
+//   FileBytes    the file in chunks of 1 MiB (a longer line grows the buffer)
+//   LineReader   lines ending in LF, CRLF or CR (a UTF-8 BOM at the start is skipped)
+//   TokenReader  whitespace-separated tokens across lines, with their line numbers
+//   SoupBuilder  vertices and faces; polygons are triangulated by finish()
+// Numbers and messages: parse_real, parse_integer, quoted, refuse (mesh_file_checks.h).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "arrangements/triangle_soup.h"
+#include "io/mesh_file_checks.h"
+
+namespace arrangements::detail {
+
+class FileBytes {
+ public:
+  // Opens path; refuses (unreadable_file) a missing, non-regular or unreadable file.
+  explicit FileBytes(const std::string& path);
+  ~FileBytes();
+  FileBytes(const FileBytes&) = delete;
+  FileBytes& operator=(const FileBytes&) = delete;
+
+  const std::string& path() const { return path_; }
+  std::uint64_t size() const { return size_; }  // the file's size when it was opened
+  std::uint64_t offset() const { return consumed_; }  // bytes consumed so far
+  std::uint64_t remaining() const { return size_ > consumed_ ? size_ - consumed_ : 0; }
+
+  // Makes at least n bytes available from the cursor, fewer only at the end of the file;
+  // returns how many are. Invalidates data() and earlier views.
+  std::size_t fill(std::size_t n) { return end_ - pos_ >= n ? end_ - pos_ : refill(n); }
+  const char* data() const { return buffer_.data() + pos_; }
+  std::size_t available() const { return end_ - pos_; }
+  void consume(std::size_t n) {
+    pos_ += n;
+    consumed_ += n;
+  }
+
+ private:
+  std::size_t refill(std::size_t n);
+  std::string path_;
+  std::FILE* file_ = nullptr;
+  std::vector<char> buffer_;
+  std::size_t pos_ = 0, end_ = 0;
+  std::uint64_t size_ = 0, consumed_ = 0;
+  bool eof_ = false;
+};
+
+inline bool is_line_end(char c) { return c == '\n' || c == '\r'; }
+
+class LineReader {
+ public:
+  explicit LineReader(FileBytes& in) : in_(in) {
+    if (in_.fill(3) >= 3 && std::string_view(in_.data(), 3) == "\xEF\xBB\xBF") in_.consume(3);
+  }
+  // The next line without its end (LF, CRLF or CR; the last line may have none); false at
+  // the end of the file. The view lives until the next call on this reader or its file.
+  bool next(std::string_view& line) {
+    std::size_t n = in_.available();
+    if (n == 0 && (n = in_.fill(1)) == 0) return false;
+    std::size_t i = 0;
+    for (;;) {
+      const char* p = in_.data();
+      while (i < n && !is_line_end(p[i])) ++i;
+      if (i < n) break;
+      const std::size_t more = in_.fill(n + 1);
+      if (more == n) {  // the last line, without an end
+        line = std::string_view(in_.data(), n);
+        in_.consume(n);
+        ++line_;
+        return true;
+      }
+      n = more;
+    }
+    std::size_t end_length = 1;
+    if (in_.data()[i] == '\r') {
+      if (i + 1 >= n) n = in_.fill(i + 2);
+      if (i + 1 < n && in_.data()[i + 1] == '\n') end_length = 2;
+    }
+    line = std::string_view(in_.data(), i);
+    in_.consume(i + end_length);
+    ++line_;
+    return true;
+  }
+  long line_number() const { return line_; }  // of the last line returned (1-based)
+
+ private:
+  FileBytes& in_;
+  long line_ = 0;
+};
+
+class TokenReader {
+ public:
+  explicit TokenReader(LineReader& lines) : lines_(lines) {}
+  // The next token, empty at the end of the file; line() is then its line. The view lives
+  // until the next call.
+  std::string_view next() {
+    for (;;) {
+      std::size_t i = 0;
+      while (i < rest_.size() && is_space(rest_[i])) ++i;
+      if (i < rest_.size()) {
+        std::size_t j = i;
+        while (j < rest_.size() && !is_space(rest_[j])) ++j;
+        const std::string_view token = rest_.substr(i, j - i);
+        rest_.remove_prefix(j);
+        return token;
+      }
+      if (!lines_.next(rest_)) {
+        rest_ = {};
+        return {};
+      }
+      new_line(rest_);
+    }
+  }
+  long line() const { return lines_.line_number(); }
+  std::size_t pending() const { return rest_.size(); }  // bytes of the current line not read yet
+
+ protected:
+  virtual void new_line(std::string_view) {}  // a hook for readers that check whole lines
+  ~TokenReader() = default;
+
+ private:
+  LineReader& lines_;
+  std::string_view rest_;
+};
+
+// A plain token reader.
+class Tokens final : public TokenReader {
+ public:
+  using TokenReader::TokenReader;
+};
+
+// The faces and vertices of one file, as its reader finds them.
+class SoupBuilder {
+ public:
+  explicit SoupBuilder(const std::string& path) : path_(path) {}
+
+  std::vector<Vec3> vertices;
+  // Triangles in file order; a polygon of n corners holds n - 2 slots here, filled by
+  // finish().
+  std::vector<Tri> triangles;
+  // After finish(): TriangleSoup::polygon (empty when no polygon was split without overlap).
+  std::vector<std::int64_t> polygon;
+
+  void add_vertex(const Vec3& v) {
+    if (vertices.size() >= kMaxIndexCount) refuse_too_large("vertices");
+    vertices.push_back(v);
+  }
+  // corners: at least 3 (the reader checks it and the indices, before finish()).
+  void add_face(std::span<const int> corners) {
+    if (corners.size() == 3) {
+      if (triangles.size() >= kMaxIndexCount) refuse_too_large("triangles");
+      triangles.push_back({corners[0], corners[1], corners[2]});
+    } else {
+      add_polygon(corners);
+    }
+  }
+  // Triangulates the polygons (triangulate_polygon.h); every index must be valid.
+  void finish();
+
+ private:
+  [[noreturn]] void refuse_too_large(const char* what) const;
+  void add_polygon(std::span<const int> corners);
+  const std::string& path_;
+  std::vector<int> polygon_corners_;
+  std::vector<std::size_t> polygon_start_;    // into polygon_corners_, per polygon
+  std::vector<std::size_t> polygon_triangle_;  // its first slot in triangles, per polygon
+};
+
+// The readers: the whole file, validated, into out (out.finish() is the caller's).
+void read_obj(FileBytes& in, SoupBuilder& out);
+void read_off(FileBytes& in, SoupBuilder& out);
+void read_stl(FileBytes& in, SoupBuilder& out);
+void read_ply(FileBytes& in, SoupBuilder& out);
+
+// Refuses a coordinate token that parse_real did not accept.
+[[noreturn]] inline void refuse_coordinate(const std::string& path, long line, RealParse r, const std::string& what,
+                                           std::string_view token) {
+  if (r == RealParse::non_finite)
+    refuse_at_line(InputErrorKind::non_finite_coordinate, path, line,
+                   what + quoted(token) + " is not a finite double");
+  refuse_at_line(InputErrorKind::malformed, path, line, what + quoted(token) + " is not a number");
+}
+
+// a == b in ASCII letter case.
+inline bool equals_ignoring_case(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    char c = a[i];
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    if (c != b[i]) return false;  // b is lower case
+  }
+  return true;
+}
+
+}  // namespace arrangements::detail

@@ -1,0 +1,42 @@
+// arrangements/src/io/triangulate_polygon.h
+//
+// bool triangulate_polygon(V, corners, out): append a triangulation of one polygon face.
+//   V        the file's vertices (finite doubles)
+//   corners  the face's corners c0 .. c(n-1), n >= 3, indices into V (valid)
+//   out      receives exactly n - 2 triangles of corner indices (no new points), in a
+//            deterministic order that depends only on the corners' coordinates and order
+// returns true when the appended triangles meet only in shared corners and edges (always
+// for n = 3; for a simple projection, below), false for the fan fallback
+//
+// Polygon faces are triangulated in the plane of the polygon: the corners are projected
+// along the axis where the polygon's (Newell) normal is largest, and if that projection is
+// a simple polygon (checked exactly: no two boundary edges meet except consecutive ones at
+// their shared corner, no repeated positions), the result is the fan from the first corner
+// if that fan is valid (every fan triangle oriented like the polygon: convex polygons, so
+// meshes of convex faces keep the triangles every other tool makes), for a quad otherwise
+// the fan from the second corner, and otherwise a constrained Delaunay triangulation of
+// the projection (CGAL, exact predicates). In all three cases every triangle lies inside
+// the polygon, the triangles meet only in shared corners
+// and edges, and they keep the polygon's orientation. A planar polygon is thus split into
+// triangles that do not overlap; a non-planar one whose projection is simple gets the
+// lifting of that 2D triangulation (triangles may fold, never cross each other).
+// Otherwise (the projection self-intersects, touches itself or repeats a corner), the
+// documented fallback is the fan from the first corner, (c0, c_i, c_(i+1)) for
+// i = 1 .. n-2. Triangles (n = 3) are appended as they are.
+//
+// Exactness: the decision "simple or not" and every orientation used by the triangulation
+// are exact predicates (no rounding decides anything); the projection axis is chosen in
+// floating point, which only selects among valid triangulations.
+// Cost: O(n log n) expected for a simple projection, O(n) for the fallback.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "arrangements/triangle_soup.h"
+
+namespace arrangements {
+
+bool triangulate_polygon(const std::vector<Vec3>& V, std::span<const int> corners, std::vector<Tri>& out);
+
+}  // namespace arrangements

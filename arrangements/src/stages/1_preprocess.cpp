@@ -1,0 +1,212 @@
+// Stages 2-3: exact vertex merge, degenerate / duplicate triangle removal, optional
+// power-of-two scaling (see preprocess.h).
+#include "stages/1_preprocess.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <tritri/double_predicates.h>
+
+namespace arrangements {
+namespace {
+
+std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser
+  x ^= x >> 30;
+  x *= 0xbf58476d1ce4e5b9ULL;
+  x ^= x >> 27;
+  x *= 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+std::uint64_t bits_of(double d) {
+  std::uint64_t b;
+  std::memcpy(&b, &d, sizeof b);
+  return b;
+}
+
+struct PositionHash {
+  std::size_t operator()(const Vec3& p) const {
+    return static_cast<std::size_t>(mix(bits_of(p[0]) ^ mix(bits_of(p[1]) ^ mix(bits_of(p[2])))));
+  }
+};
+
+struct CornerSetHash {
+  std::size_t operator()(const Tri& t) const {
+    return static_cast<std::size_t>(mix(static_cast<std::uint32_t>(t[0]) ^
+                                        mix((static_cast<std::uint64_t>(static_cast<std::uint32_t>(t[1])) << 32) ^
+                                            static_cast<std::uint32_t>(t[2]))));
+  }
+};
+
+// -0.0 + 0.0 == +0.0, so equal coordinates get equal bits (hash and output).
+Vec3 without_negative_zero(const Vec3& p) { return {p[0] + 0.0, p[1] + 0.0, p[2] + 0.0}; }
+
+bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
+  using tritri::Plane;
+  using tritri::Sign;
+  return tritri::orient2d(a, b, c, Plane::XY) == Sign::Zero && tritri::orient2d(a, b, c, Plane::YZ) == Sign::Zero &&
+         tritri::orient2d(a, b, c, Plane::ZX) == Sign::Zero;
+}
+
+void check_well_formed(const TriangleSoup& in) {
+  const std::size_t nf = in.triangles.size();
+  if (in.labels.size() != nf || in.source.size() != nf || (!in.polygon.empty() && in.polygon.size() != nf))
+    throw std::invalid_argument("preprocess: labels, source (and polygon) must have one entry per triangle");
+  for (std::size_t v = 0; v < in.vertices.size(); ++v)
+    for (double c : in.vertices[v])
+      if (!std::isfinite(c))
+        throw std::invalid_argument("preprocess: vertex " + std::to_string(v) + " has a non-finite coordinate");
+  const long long nv = static_cast<long long>(in.vertices.size());
+  const long long ns = static_cast<long long>(in.label_sets.size());
+  for (std::size_t t = 0; t < nf; ++t) {
+    for (int i : in.triangles[t])
+      if (i < 0 || i >= nv)
+        throw std::invalid_argument("preprocess: triangle " + std::to_string(t) + " has vertex index " +
+                                    std::to_string(i) + " out of range");
+    if (in.labels[t] < 0 || in.labels[t] >= ns)
+      throw std::invalid_argument("preprocess: triangle " + std::to_string(t) + " has label set index " +
+                                  std::to_string(in.labels[t]) + " out of range");
+  }
+}
+
+// Sorted, without repeats.
+LabelSet normalized(LabelSet s) {
+  std::sort(s.begin(), s.end());
+  s.erase(std::unique(s.begin(), s.end()), s.end());
+  return s;
+}
+
+// k such that max_abs * 2^k is in [2^9, 2^10); 0 for max_abs == 0.
+int scale_exponent_for(double max_abs) {
+  if (max_abs == 0) return 0;
+  int e = 0;
+  std::frexp(max_abs, &e);  // max_abs in [2^(e-1), 2^e), also for subnormals
+  return 10 - e;
+}
+
+// Scales by 2^k if that is exact for every coordinate; false (nothing changed) otherwise.
+bool scale_exactly(std::vector<Vec3>& vertices, int k) {
+  for (const Vec3& p : vertices)
+    for (double c : p)
+      if (std::ldexp(std::ldexp(c, k), -k) != c) return false;
+  for (Vec3& p : vertices)
+    for (double& c : p) c = std::ldexp(c, k);
+  return true;
+}
+
+}  // namespace
+
+TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options, PreprocessStats& stats) {
+  check_well_formed(in);
+  stats = PreprocessStats{};
+
+  // Distinct positions, in input order.
+  std::vector<Vec3> positions;
+  std::vector<int> position_of(in.vertices.size());
+  {
+    std::unordered_map<Vec3, int, PositionHash> id_of;
+    id_of.reserve(in.vertices.size());
+    for (std::size_t v = 0; v < in.vertices.size(); ++v) {
+      const Vec3 p = without_negative_zero(in.vertices[v]);
+      const auto [it, inserted] = id_of.try_emplace(p, static_cast<int>(positions.size()));
+      if (inserted) positions.push_back(p);
+      position_of[v] = it->second;
+    }
+  }
+  stats.merged_vertices = in.vertices.size() - positions.size();
+
+  // Kept triangles (corners as position ids), their input label-set indices, and the
+  // labels their duplicates add (appended, sorted once at the end: merging k copies with
+  // distinct labels stays linear in the number of labels).
+  std::vector<Tri> kept;
+  std::vector<int> kept_set;
+  std::vector<std::int64_t> kept_source, kept_polygon;
+  std::unordered_map<int, std::vector<std::uint32_t>> added_labels;
+  {
+    std::unordered_map<Tri, int, CornerSetHash> kept_by_corners;
+    kept_by_corners.reserve(in.triangles.size());
+    for (std::size_t t = 0; t < in.triangles.size(); ++t) {
+      const Tri& tri = in.triangles[t];
+      const Tri p = {position_of[tri[0]], position_of[tri[1]], position_of[tri[2]]};
+      const bool repeated = p[0] == p[1] || p[1] == p[2] || p[0] == p[2];
+      if (repeated || collinear(positions[p[0]], positions[p[1]], positions[p[2]])) {
+        ++stats.removed_degenerate;
+        continue;
+      }
+      Tri key = p;
+      std::sort(key.begin(), key.end());
+      const auto [it, inserted] = kept_by_corners.try_emplace(key, static_cast<int>(kept.size()));
+      if (!inserted) {
+        ++stats.removed_duplicate;
+        if (in.labels[t] != kept_set[it->second]) {
+          const LabelSet& labels = in.label_sets[in.labels[t]];
+          std::vector<std::uint32_t>& added = added_labels[it->second];
+          added.insert(added.end(), labels.begin(), labels.end());
+        }
+        continue;
+      }
+      kept.push_back(p);
+      kept_set.push_back(in.labels[t]);
+      kept_source.push_back(in.source[t]);
+      if (!in.polygon.empty()) kept_polygon.push_back(in.polygon[t]);
+    }
+  }
+
+  // Output vertices and label sets in first-use order.
+  TriangleSoup out;
+  std::vector<int> out_vertex(positions.size(), -1);
+  std::vector<int> out_set_of_input_set(in.label_sets.size(), -1);
+  std::map<LabelSet, int> out_set_by_content;  // equal sets are stored once
+  auto out_set_of = [&](LabelSet labels) {
+    const int next = static_cast<int>(out.label_sets.size());
+    const auto [it, inserted] = out_set_by_content.try_emplace(std::move(labels), next);
+    if (inserted) out.label_sets.push_back(it->first);
+    return it->second;
+  };
+  out.triangles.reserve(kept.size());
+  out.labels.reserve(kept.size());
+  for (std::size_t t = 0; t < kept.size(); ++t) {
+    Tri tri;
+    for (int i = 0; i < 3; ++i) {
+      int& id = out_vertex[kept[t][i]];
+      if (id < 0) {
+        id = static_cast<int>(out.vertices.size());
+        out.vertices.push_back(positions[kept[t][i]]);
+      }
+      tri[i] = id;
+    }
+    out.triangles.push_back(tri);
+    const auto added = added_labels.find(static_cast<int>(t));
+    if (added != added_labels.end()) {
+      LabelSet labels = in.label_sets[kept_set[t]];
+      labels.insert(labels.end(), added->second.begin(), added->second.end());
+      out.labels.push_back(out_set_of(normalized(std::move(labels))));
+    } else {
+      int& set = out_set_of_input_set[kept_set[t]];
+      if (set < 0) set = out_set_of(normalized(in.label_sets[kept_set[t]]));
+      out.labels.push_back(set);
+    }
+  }
+  out.source = std::move(kept_source);
+  out.polygon = std::move(kept_polygon);
+  stats.unreferenced_vertices = positions.size() - out.vertices.size();
+
+  if (options.scale) {
+    double max_abs = 0;
+    for (const Vec3& p : out.vertices)
+      for (double c : p) max_abs = std::max(max_abs, std::fabs(c));
+    stats.scale_exponent = scale_exponent_for(max_abs);
+    if (!scale_exactly(out.vertices, stats.scale_exponent)) stats.scale_exponent = 0;  // valid input: kept as is
+  }
+  return out;
+}
+
+}  // namespace arrangements

@@ -1,0 +1,281 @@
+#include "stages/4_intersection_graph.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include <algorithm>
+#include <numeric>
+
+#include <tritri/implicit_predicates.h>
+
+#include "support/auxiliary_point.h"
+
+namespace arrangements {
+namespace {
+
+template <class T>
+void sort_unique(std::vector<T>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+void build_edges(const std::vector<Tri>& F, IntersectionGraph& g) {
+  std::vector<std::array<int, 3>> half;  // (v0, v1, triangle * 3 + k) with v0 < v1
+  half.reserve(F.size() * 3);
+  for (std::size_t t = 0; t < F.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      int a = F[t][k], b = F[t][(k + 1) % 3];
+      if (a > b) std::swap(a, b);
+      half.push_back({a, b, static_cast<int>(t * 3 + k)});
+    }
+  std::sort(half.begin(), half.end());
+  g.triangle_edges.assign(F.size(), {-1, -1, -1});
+  for (std::size_t i = 0; i < half.size(); ++i) {
+    if (i == 0 || half[i][0] != half[i - 1][0] || half[i][1] != half[i - 1][1])
+      g.edges.push_back({half[i][0], half[i][1]});
+    g.triangle_edges[half[i][2] / 3][half[i][2] % 3] = static_cast<int>(g.edges.size() - 1);
+  }
+}
+
+// A combinatorial name of a new point: (0, LPI ids) for an edge crossing a face,
+// (1, edge, edge) for two crossing edges, edges as sorted vertex ids.
+using PointName = std::array<int, 6>;
+
+PointName point_name(const std::vector<Tri>& F, const PairIntersection& p, const PairPoint& q) {
+  if (q.in[0].kind == Location::Edge && q.in[1].kind == Location::Edge) {
+    std::array<int, 2> e[2];
+    for (int k = 0; k < 2; ++k) {
+      const Tri& t = F[p.tri[k]];
+      e[k] = {t[q.in[k].id], t[(q.in[k].id + 1) % 3]};
+      if (e[k][0] > e[k][1]) std::swap(e[k][0], e[k][1]);
+    }
+    if (e[1] < e[0]) std::swap(e[0], e[1]);
+    return {1, e[0][0], e[0][1], e[1][0], e[1][1], 0};
+  }
+  return {0, q.lpi.v[0], q.lpi.v[1], q.lpi.v[2], q.lpi.v[3], q.lpi.v[4]};
+}
+
+tritri::ImplicitPoint make_lpi(const std::vector<Vec3>& V, const std::vector<Tri>& F, const LpiKey& key) {
+  auto at = [&](int id) { return id >= 0 ? V[id] : auxiliary_point(V, F[-1 - id]); };
+  return tritri::ImplicitPoint::lpi(at(key.v[0]), at(key.v[1]), at(key.v[2]), at(key.v[3]), at(key.v[4]));
+}
+
+// Two planes through the line of segment s of pair p (see SegmentSupport).
+SegmentSupport segment_support(const std::vector<Tri>& F, const PairIntersection& p, const tritri::Segment& s, int a,
+                               int b) {
+  SegmentSupport sup;
+  sup.ends = {a, b};
+  sup.planes[0] = F[p.tri[0]];
+  sup.planes[1] = F[p.tri[1]];
+  if (!p.coplanar) return sup;
+  // Coplanar pairs: the segment runs along an edge of one of the triangles.
+  for (int k = 0; k < 2; ++k) {
+    const int common = closed_edges(p.points[s.p0].in[k]) & closed_edges(p.points[s.p1].in[k]);
+    for (int e = 0; e < 3; ++e)
+      if (common & (1 << e)) {
+        const Tri& t = F[p.tri[k]];
+        sup.planes[1] = {t[e], t[(e + 1) % 3], -1 - p.tri[k]};
+        return sup;
+      }
+  }
+  sup.planes[1] = sup.planes[0];  // not along an edge: triangulation reports it
+  return sup;
+}
+
+// Where point x (in t's plane) lies in closed triangle t: -2 outside, -1 inside,
+// 0..2 on that open edge, 3..5 at vertex (k - 3).
+int locate(const std::vector<tritri::ImplicitPoint>& P, const Tri& t, tritri::Plane plane, int orientation,
+           int x) {
+  for (int k = 0; k < 3; ++k)
+    if (t[k] == x) return 3 + k;
+  int zeros = 0, edge = -1;
+  for (int k = 0; k < 3; ++k) {
+    const int s = tritri::to_int(tritri::orient2d(P[t[k]], P[t[(k + 1) % 3]], P[x], plane)) * orientation;
+    if (s < 0) return -2;
+    if (s == 0) {
+      ++zeros;
+      edge = k;
+    }
+  }
+  if (zeros == 0) return -1;
+  if (zeros == 1) return edge;
+  return -2;  // on two edge lines: a vertex, but vertices were matched by id above
+}
+
+struct Additions {
+  std::vector<int> inside;
+  std::vector<std::array<int, 2>> on_edge;  // (edge id, point)
+  std::vector<std::array<int, 2>> segments;
+};
+
+// Coplanar partners share their points and segments (as in the 2020 pipeline): for every
+// triangle t and each coplanar partner u, the points of u (inside u or on its edges) that
+// lie in the closed triangle t are added to t (inside t, or on the edge of t they lie on),
+// and u's segments whose endpoints both lie in t are added to t's segments. Without it, a
+// constraint of u meeting u's edge inside t would cross t's copy of that edge at a point t
+// does not know, and t's triangulation would construct it again. Additions are computed
+// from the lists as they were before, so the result does not depend on processing order;
+// the caller sorts and deduplicates afterwards.
+// Exactness: point location is orient2d on implicit points (tritri's filtered exact
+// predicates) in a projection where t is not degenerate. Cost: proportional to the points
+// and segments of coplanar partners.
+void share_coplanar(const std::vector<Vec3>& V, const std::vector<Tri>& F, IntersectionGraph& g) {
+  std::vector<Additions> add(F.size());
+  tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
+    if (g.coplanar_partners[t].empty()) return;
+    const Tri& tri = F[t];
+    tritri::Plane plane = tritri::Plane::XY;
+    int orientation = 0;
+    for (tritri::Plane p : {tritri::Plane::XY, tritri::Plane::YZ, tritri::Plane::ZX}) {
+      orientation = tritri::to_int(tritri::orient2d(V[tri[0]], V[tri[1]], V[tri[2]], p));
+      if (orientation != 0) {
+        plane = p;
+        break;
+      }
+    }
+    Additions& a = add[t];
+    auto place = [&](int x) {
+      const int where = locate(g.points, tri, plane, orientation, x);
+      if (where == -1) a.inside.push_back(x);
+      else if (where >= 0 && where <= 2) a.on_edge.push_back({g.triangle_edges[t][where], x});
+      return where != -2;
+    };
+    for (int u : g.coplanar_partners[t]) {
+      for (int x : g.triangle_points[u]) place(x);
+      for (int k = 0; k < 3; ++k)
+        for (int x : g.edge_points[g.triangle_edges[u][k]]) place(x);
+      for (const auto& s : g.triangle_segments[u])
+        if (locate(g.points, tri, plane, orientation, s[0]) != -2 &&
+            locate(g.points, tri, plane, orientation, s[1]) != -2)
+          a.segments.push_back(s);
+    }
+  });
+  for (std::size_t t = 0; t < F.size(); ++t) {
+    for (int x : add[t].inside) g.triangle_points[t].push_back(x);
+    for (const auto& e : add[t].on_edge) g.edge_points[e[0]].push_back(e[1]);
+    for (const auto& s : add[t].segments) g.triangle_segments[t].push_back(s);
+  }
+}
+
+}  // namespace
+
+IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std::vector<Tri>& F,
+                                           const std::vector<PairIntersection>& pairs) {
+  IntersectionGraph g;
+  g.num_input_vertices = static_cast<int>(V.size());
+  build_edges(F, g);
+
+  // 1. New points by definition. A crossing of two edges is named by the two edges (its
+  // LPI may use the plane of either triangle on either side, so several pairs describe
+  // it differently); an edge crossing a face by its LPI. Each name keeps its smallest LPI.
+  std::vector<std::pair<PointName, LpiKey>> named;
+  for (const auto& p : pairs)
+    for (const auto& q : p.points)
+      if (q.vertex < 0) named.emplace_back(point_name(F, p, q), q.lpi);
+  sort_unique(named);
+  std::vector<PointName> names;
+  std::vector<LpiKey> keys;
+  for (const auto& [name, lpi] : named)
+    if (names.empty() || names.back() != name) {
+      names.push_back(name);
+      keys.push_back(lpi);
+    }
+  std::vector<tritri::ImplicitPoint> lpis(keys.size());
+  tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { lpis[i] = make_lpi(V, F, keys[i]); });
+
+  // 2. Exact deduplication among new points: sort by exact lexicographic order; each run
+  // of equal points is represented by its smallest key index (deterministic).
+  std::vector<int> order(keys.size());
+  std::iota(order.begin(), order.end(), 0);
+  tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
+    const int c = tritri::compare_xyz(lpis[a], lpis[b]);
+    return c != 0 ? c < 0 : a < b;
+  });
+  std::vector<int> representative(keys.size());
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i + 1;
+    while (j < order.size() && tritri::compare_xyz(lpis[order[i]], lpis[order[j]]) == 0) ++j;
+    int rep = order[i];
+    for (std::size_t k = i; k < j; ++k) rep = std::min(rep, order[k]);
+    for (std::size_t k = i; k < j; ++k) representative[order[k]] = rep;
+    i = j;
+  }
+
+  // 3. New points that coincide with an input vertex become that vertex.
+  std::vector<int> by_position(V.size());
+  std::iota(by_position.begin(), by_position.end(), 0);
+  std::sort(by_position.begin(), by_position.end(), [&](int a, int b) { return V[a] < V[b]; });
+  std::vector<int> final_id(keys.size(), -1);
+  g.points.reserve(V.size());
+  for (const Vec3& v : V) g.points.push_back(tritri::ImplicitPoint::explicit_point(v));
+  std::vector<int> vertex_match(keys.size(), -1);
+  tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
+    if (representative[i] != static_cast<int>(i)) return;
+    auto it = std::lower_bound(by_position.begin(), by_position.end(), 0, [&](int vid, int) {
+      return tritri::compare_xyz(g.points[vid], lpis[i]) < 0;
+    });
+    if (it != by_position.end() && tritri::compare_xyz(g.points[*it], lpis[i]) == 0) vertex_match[i] = *it;
+  });
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (representative[i] != static_cast<int>(i)) continue;
+    if (vertex_match[i] >= 0) {
+      final_id[i] = vertex_match[i];
+    } else {
+      final_id[i] = static_cast<int>(g.points.size());
+      g.points.push_back(lpis[i]);
+      ++g.new_points;
+    }
+  }
+  for (std::size_t i = 0; i < keys.size(); ++i) final_id[i] = final_id[representative[i]];
+
+  // 4. Record points, segments and coplanar partners per triangle and edge.
+  g.edge_points.assign(g.edges.size(), {});
+  g.triangle_points.assign(F.size(), {});
+  g.triangle_segments.assign(F.size(), {});
+  g.coplanar_partners.assign(F.size(), {});
+  auto id_of = [&](const PairIntersection& p, const PairPoint& q) {
+    if (q.vertex >= 0) return q.vertex;
+    return final_id[std::lower_bound(names.begin(), names.end(), point_name(F, p, q)) - names.begin()];
+  };
+  for (const PairIntersection& p : pairs) {
+    ++g.intersecting_pairs;
+    int ids[6];
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+      ids[i] = id_of(p, p.points[i]);
+      for (int k = 0; k < 2; ++k) {
+        const Location& loc = p.points[i].in[k];
+        if (loc.kind == Location::Edge) g.edge_points[g.triangle_edges[p.tri[k]][loc.id]].push_back(ids[i]);
+        if (loc.kind == Location::Interior) g.triangle_points[p.tri[k]].push_back(ids[i]);
+      }
+    }
+    for (const auto& s : p.segments) {
+      int a = ids[s.p0], b = ids[s.p1];
+      if (a == b) continue;
+      if (a > b) std::swap(a, b);
+      g.segment_supports.push_back(segment_support(F, p, s, a, b));
+      // A segment along a triangle's own edge is already that edge (its points are
+      // recorded on the edge): it constrains only the triangles it crosses.
+      for (int k = 0; k < 2; ++k)
+        if (!(closed_edges(p.points[s.p0].in[k]) & closed_edges(p.points[s.p1].in[k])))
+          g.triangle_segments[p.tri[k]].push_back({a, b});
+    }
+    if (p.coplanar) {
+      ++g.coplanar_pairs;
+      g.coplanar_partners[p.tri[0]].push_back(p.tri[1]);
+      g.coplanar_partners[p.tri[1]].push_back(p.tri[0]);
+    }
+  }
+  for (auto& v : g.coplanar_partners) sort_unique(v);
+  share_coplanar(V, F, g);
+  for (auto& v : g.edge_points) sort_unique(v);
+  for (auto& v : g.triangle_points) sort_unique(v);
+  for (auto& v : g.triangle_segments) sort_unique(v);
+  sort_unique(g.segment_supports);
+  std::vector<std::array<int, 2>> all_segments;
+  for (const auto& v : g.triangle_segments) all_segments.insert(all_segments.end(), v.begin(), v.end());
+  sort_unique(all_segments);
+  g.segments = all_segments.size();
+  return g;
+}
+
+}  // namespace arrangements
