@@ -131,7 +131,7 @@ TriangleSoup hand_soup(std::vector<Vec3> vertices, std::vector<Tri> triangles, s
   TriangleSoup s;
   s.vertices = std::move(vertices);
   s.triangles = std::move(triangles);
-  s.labels = labels.empty() ? std::vector<int>(s.triangles.size(), 0) : std::move(labels);
+  s.label_set = labels.empty() ? std::vector<int>(s.triangles.size(), 0) : std::move(labels);
   s.label_sets = std::move(label_sets);
   if (source.empty())
     for (std::size_t i = 0; i < s.triangles.size(); ++i) source.push_back(static_cast<std::int64_t>(i));
@@ -418,7 +418,7 @@ Problems tiling_problems(const Pipeline& p) {
       fail("output triangle " + std::to_string(t) + " is degenerate or oriented against its owner");
     LabelSet labels;
     for (int u : covering) {
-      const LabelSet& l = soup.label_sets[soup.labels[u]];
+      const LabelSet& l = soup.label_sets[soup.label_set[u]];
       labels.insert(labels.end(), l.begin(), l.end());
       covered_area[u] += abs(area2(X[T[0]], X[T[1]], X[T[2]], axis[u]));
     }
@@ -946,7 +946,7 @@ TEST(Arrange, ManyUnreferencedVerticesAreIgnored) {
     s.vertices.push_back({101.0 + 10 * i, 0, 0});
     s.vertices.push_back({100.0 + 10 * i, 1, 0});
     s.triangles.push_back({base, base + 1, base + 2});
-    s.labels.push_back(0);
+    s.label_set.push_back(0);
     s.source.push_back(static_cast<std::int64_t>(s.source.size()));
     for (int j = 0; j < 125; ++j) s.vertices.push_back({-50.0 - i, 0.5 * j, 7.25});
   }

@@ -119,7 +119,7 @@ OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& g, int
   for (std::size_t t = 0; t < nF; ++t) {
     const int ti = static_cast<int>(t);
     if (!busy[t]) {
-      emit(soup.triangles[t], ti, soup.labels[t]);
+      emit(soup.triangles[t], ti, soup.label_set[t]);
       continue;
     }
     const Piece& p = pieces[t];
@@ -127,7 +127,7 @@ OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& g, int
     for (std::size_t c = 0; c < p.covers.size(); ++c) {
       LabelSet merged;
       for (int u : p.covers[c]) {
-        const LabelSet& l = soup.label_sets[soup.labels[u]];
+        const LabelSet& l = soup.label_sets[soup.label_set[u]];
         merged.insert(merged.end(), l.begin(), l.end());
       }
       std::sort(merged.begin(), merged.end());
@@ -140,7 +140,7 @@ OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& g, int
       Tri tr = p.triangles[k];
       for (int& v : tr)
         if (v < 0) v = tpi_id[tpi_offset[t] + (-1 - v)];
-      emit(tr, ti, p.covered_by[k] < 0 ? soup.labels[t] : cover_labels[p.covered_by[k]]);
+      emit(tr, ti, p.covered_by[k] < 0 ? soup.label_set[t] : cover_labels[p.covered_by[k]]);
     }
   }
   if (scale_exponent != 0)
