@@ -132,40 +132,13 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
   arrangements::EigenArrangement out;
   {
     nb::gil_scoped_release release;
-    const std::string where = "tritri.arrange: ";
-    if (V.shape(0) > 0 && V.shape(1) != 3)
-      throw std::invalid_argument(where + "V must have 3 columns (x, y, z), got " + std::to_string(V.shape(1)));
-    if (F.shape(0) > 0 && F.shape(1) != 3)
-      throw std::invalid_argument(where + "F must have 3 columns (one triangle per row), got " +
-                                  std::to_string(F.shape(1)));
-    const Eigen::MatrixXd Ve = V.shape(0) > 0 ? Eigen::MatrixXd(as_eigen(V)) : Eigen::MatrixXd(0, 3);
-    // int64 -> int: an index outside [0, #V) is refused here, before it could wrap.
-    const auto Fl = as_eigen(F);
-    const auto nv = static_cast<std::int64_t>(Ve.rows());
-    Eigen::MatrixXi Fe(F.shape(0) > 0 ? Fl.rows() : 0, 3);
-    for (Eigen::Index r = 0; r < Fe.rows(); ++r)
-      for (int c = 0; c < 3; ++c) {
-        const std::int64_t v = Fl(r, c);
-        if (v < 0 || v >= nv)
-          throw std::invalid_argument(where + "F[" + std::to_string(r) + ", " + std::to_string(c) + "] = " +
-                                      std::to_string(v) + " is out of range (V has " + std::to_string(nv) + " rows)");
-        Fe(r, c) = static_cast<int>(v);
-      }
-    std::optional<Eigen::VectorXi> Le;
-    if (labels) {
-      if (labels->shape(0) != static_cast<std::size_t>(Fe.rows()))
-        throw std::invalid_argument(where + "labels must have one entry per row of F (" + std::to_string(Fe.rows()) +
-                                    "), got " + std::to_string(labels->shape(0)));
-      Le.emplace(Fe.rows());
-      for (Eigen::Index r = 0; r < Fe.rows(); ++r) {
-        const std::int64_t l = labels->data()[r];
-        if (l < 0 || l > INT_MAX)
-          throw std::invalid_argument(where + "labels[" + std::to_string(r) + "] = " + std::to_string(l) +
-                                      " is not in [0, " + std::to_string(INT_MAX) + "]");
-        (*Le)(r) = static_cast<int>(l);
-      }
-    }
-    out = arrangements::arrange(Ve, Fe, options, Le ? &*Le : nullptr);
+    // Checked once, by the Eigen entry point (int64 indices and labels are range-checked
+    // there before they are narrowed).
+    using LabelVector = Eigen::Map<const Eigen::Matrix<std::int64_t, Eigen::Dynamic, 1>>;
+    std::optional<LabelVector> Le;
+    if (labels) Le.emplace(labels->data(), static_cast<Eigen::Index>(labels->shape(0)));
+    out = arrangements::detail::arrange_eigen(as_eigen(V), as_eigen(F), options, Le ? &*Le : nullptr,
+                                              "tritri.arrange");
   }
 
   const auto nv = static_cast<std::size_t>(out.V.rows()), nf = static_cast<std::size_t>(out.F.rows());

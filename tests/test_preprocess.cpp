@@ -12,6 +12,7 @@
 // Expected values are written by hand or computed by the naive reference.
 #include <gtest/gtest.h>
 
+#include "arrangements/arrange.h"
 #include "stages/1_preprocess.h"
 
 #include <algorithm>
@@ -354,19 +355,24 @@ TEST(Preprocess, ScalingChangesNothingButTheCoordinates) {
       EXPECT_EQ(scaled.vertices[i][a], std::ldexp(plain.vertices[i][a], scaled_stats.scale_exponent));
 }
 
-TEST(Preprocess, RefusesIllFormedSoupsWithInvalidArgument) {
-  PreprocessStats stats;
-  EXPECT_THROW(preprocess(make_soup({{0, 0, 0}, {1, 0, 0}}, {{0, 1, 2}}), {}, stats), std::invalid_argument);
-  EXPECT_THROW(preprocess(make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, -1}}), {}, stats),
-               std::invalid_argument);
-  TriangleSoup bad_label = make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
-  bad_label.label_set[0] = 3;
-  EXPECT_THROW(preprocess(bad_label, {}, stats), std::invalid_argument);
-  EXPECT_THROW(preprocess(make_soup({{0, 0, 0}, {1, NAN, 0}, {0, 1, 0}}, {{0, 1, 2}}), {}, stats),
-               std::invalid_argument);
-  TriangleSoup short_source = make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
-  short_source.source.clear();
-  EXPECT_THROW(preprocess(short_source, {}, stats), std::invalid_argument);
+// The pipeline checks a soup once, at arrange(): validate_soup (the stages assume it).
+TEST(ValidateSoup, RefusesIllFormedSoupsWithInvalidArgument) {
+  std::vector<TriangleSoup> bad;
+  bad.push_back(make_soup({{0, 0, 0}, {1, 0, 0}}, {{0, 1, 2}}));
+  bad.push_back(make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, -1}}));
+  bad.push_back(make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
+  bad.back().label_set[0] = 3;
+  bad.push_back(make_soup({{0, 0, 0}, {1, NAN, 0}, {0, 1, 0}}, {{0, 1, 2}}));
+  bad.push_back(make_soup({{0, 0, 0}, {1, INFINITY, 0}, {0, 1, 0}}, {{0, 1, 2}}));
+  bad.push_back(make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
+  bad.back().source.clear();
+  bad.push_back(make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
+  bad.back().polygon = {0, 0};
+  for (std::size_t i = 0; i < bad.size(); ++i) {
+    EXPECT_THROW(arrangements::validate_soup(bad[i]), std::invalid_argument) << i;
+    EXPECT_THROW(arrangements::arrange(bad[i], arrangements::ArrangeOptions{}), std::invalid_argument) << i;
+  }
+  EXPECT_NO_THROW(arrangements::validate_soup(make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}})));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <tbb/info.h>
 
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -92,7 +93,34 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
   return r;
 }
 
+void validate_soup(const TriangleSoup& in) {
+  const std::size_t nf = in.triangles.size();
+  if (in.label_set.size() != nf || in.source.size() != nf || (!in.polygon.empty() && in.polygon.size() != nf))
+    throw std::invalid_argument("arrange: label_set, source (and polygon) must have one entry per triangle");
+  for (std::size_t v = 0; v < in.vertices.size(); ++v)
+    for (double c : in.vertices[v])
+      if (!std::isfinite(c))
+        throw std::invalid_argument("arrange: vertex " + std::to_string(v) + " has a non-finite coordinate");
+  const long long nv = static_cast<long long>(in.vertices.size());
+  const long long ns = static_cast<long long>(in.label_sets.size());
+  for (std::size_t t = 0; t < nf; ++t) {
+    for (int i : in.triangles[t])
+      if (i < 0 || i >= nv)
+        throw std::invalid_argument("arrange: triangle " + std::to_string(t) + " has vertex index " +
+                                    std::to_string(i) + " out of range");
+    if (in.label_set[t] < 0 || in.label_set[t] >= ns)
+      throw std::invalid_argument("arrange: triangle " + std::to_string(t) + " has label set index " +
+                                  std::to_string(in.label_set[t]) + " out of range");
+  }
+}
+
+
 ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) {
+  validate_soup(input);
+  return run_pipeline(input, options, nullptr);
+}
+
+ArrangeResult detail::arrange_validated(const TriangleSoup& input, const ArrangeOptions& options) {
   return run_pipeline(input, options, nullptr);
 }
 

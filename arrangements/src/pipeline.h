@@ -1,10 +1,11 @@
 // arrangements/src/pipeline.h (internal)
 //
 // run_pipeline: arrange() with access to what the stages built on the way, for the tools
-// that compare classifiers (tritri-compare) and for tests. arrange() is run_pipeline
-// without `keep`.
+// that compare classifiers (tritri-compare) and for tests. arrange() is validate_soup,
+// then run_pipeline without `keep`.
 //   keep  when not null, receives the preprocessed soup and its intersection graph
-// Same preconditions, output and exactness as arrange() (arrangements/arrange.h).
+// Precondition: a valid soup (validate_soup; the file loader's soups are valid by
+// construction). Same output and exactness as arrange() (arrangements/arrange.h).
 #pragma once
 
 #include "arrangements/arrange.h"

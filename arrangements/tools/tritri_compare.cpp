@@ -182,9 +182,9 @@ int main(int argc, char** argv) {
     for (int r = 1; r < repeat; ++r) {
       ArrangeOptions timing = options;
       timing.classifier = Classifier::Native;
-      keep_min(native.stats, arrange(input, timing).stats);
+      keep_min(native.stats, run_pipeline(input, timing, nullptr).stats);
       timing.classifier = Classifier::Tritri;
-      keep_min(tritri_run.stats, arrange(input, timing).stats);
+      keep_min(tritri_run.stats, run_pipeline(input, timing, nullptr).stats);
     }
     native.stats.t_load_s = tritri_run.stats.t_load_s = t_load;
 

@@ -2,11 +2,11 @@
 //
 // arrange(input, options): the whole mesh-arrangement pipeline on a loaded soup:
 // preprocess, candidate pairs, classification (native or tritri), intersection graph,
-// coplanar propagation, triangulation, output mesh. The command-line tool `arrange`, the
-// comparison tool `tritri-compare`, the Eigen API and the Python module are layers over it.
+// triangulation into the output mesh. The command-line tool `arrange`, the comparison
+// tool `tritri-compare`, the Eigen API and the Python module are layers over it.
 //
-// Inputs:  input   a TriangleSoup (e.g. load_triangle_soups); finite coordinates, valid
-//                  indices (otherwise std::invalid_argument)
+// Inputs:  input   a TriangleSoup; checked here, once (validate_soup below); the stages
+//                  then assume it
 //          options classifier, threads (<= 0: all cores; at most kMaxThreads, see
 //                  thread_count.h, else std::invalid_argument; the caller's TBB arena
 //                  limit also applies), scale (exact power-of-two scaling by the
@@ -64,5 +64,17 @@ struct ArrangeResult {
 };
 
 ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options);
+
+// validate_soup(soup): throws std::invalid_argument, naming the first violation, unless
+// every coordinate is finite, every index is in range (triangles into vertices, label_set
+// into label_sets), and label_set, source and polygon (when not empty) have one entry per
+// triangle. Cost: O(#V + #F).
+void validate_soup(const TriangleSoup& soup);
+
+namespace detail {
+// arrange() without validate_soup, for entry points that have checked the same facts at
+// their own boundary (the file loader, arrange_eigen.h): every fact is checked once.
+ArrangeResult arrange_validated(const TriangleSoup& input, const ArrangeOptions& options);
+}  // namespace detail
 
 }  // namespace arrangements

@@ -57,8 +57,11 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
+
+#include <tritri/detail/mesh_pairs.h>
 
 #include "arrangements/arrange.h"
 #include "arrangements/triangle_soup.h"
@@ -78,60 +81,43 @@ struct EigenArrangement {
 
 namespace detail {
 
-// The input as a TriangleSoup, with every check that keeps the pipeline from seeing
-// invalid data; source = row of F.
-inline TriangleSoup eigen_soup(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::VectorXi* labels) {
-  const std::string where = "arrangements::arrange: ";
-  if (V.size() != 0 && V.cols() != 3)
-    throw std::invalid_argument(where + "V must have 3 columns (x, y, z), got " + std::to_string(V.cols()));
-  if (F.size() != 0 && F.cols() != 3)
-    throw std::invalid_argument(where + "F must have 3 columns (one triangle per row), got " +
-                                std::to_string(F.cols()));
-  const Eigen::Index nv = V.size() == 0 ? 0 : V.rows(), nf = F.size() == 0 ? 0 : F.rows();
-  if (nv > INT_MAX || nf > INT_MAX)
-    throw std::invalid_argument(where + "more than " + std::to_string(INT_MAX) + " vertices or triangles");
-  if (labels && labels->size() != nf)
-    throw std::invalid_argument(where + "labels must have one entry per row of F (" + std::to_string(nf) +
-                                "), got " + std::to_string(labels->size()));
-
+// The input as a TriangleSoup: the one place where the Eigen and Python entry points check
+// it (coordinates and indices by tritri's checks, shared with the batch API; labels
+// here); source = row of F. `where` names the function in messages.
+template <class DV, class DF, class DL>
+TriangleSoup eigen_soup(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<DF>& F,
+                        const Eigen::MatrixBase<DL>* labels, const std::string& where) {
+  static_assert(std::is_integral_v<typename DL::Scalar>, "labels must hold integers");
   TriangleSoup soup;
-  soup.vertices.resize(static_cast<std::size_t>(nv));
-  for (Eigen::Index r = 0; r < nv; ++r)
-    for (int c = 0; c < 3; ++c) {
-      if (!std::isfinite(V(r, c)))
-        throw std::invalid_argument(where + "V(" + std::to_string(r) + ", " + std::to_string(c) + ") = " +
-                                    std::to_string(V(r, c)) + " is not a finite coordinate");
-      soup.vertices[r][c] = V(r, c);
-    }
-  soup.triangles.resize(static_cast<std::size_t>(nf));
-  soup.label_set.resize(static_cast<std::size_t>(nf));
-  soup.source.resize(static_cast<std::size_t>(nf));
-  std::map<int, int> set_of_label;  // label -> index of {label} in soup.label_sets
-  for (Eigen::Index r = 0; r < nf; ++r) {
-    for (int c = 0; c < 3; ++c) {
-      const int v = F(r, c);
-      if (v < 0 || v >= nv)
-        throw std::invalid_argument(where + "F(" + std::to_string(r) + ", " + std::to_string(c) + ") = " +
-                                    std::to_string(v) + " is out of range (V has " + std::to_string(nv) + " rows)");
-      soup.triangles[r][c] = v;
-    }
-    const int label = labels ? (*labels)(r) : 0;
-    if (label < 0)
-      throw std::invalid_argument(where + "labels(" + std::to_string(r) + ") = " + std::to_string(label) +
-                                  " is negative");
+  soup.vertices = tritri::detail::checked_vertices(V, where + ": V");
+  soup.triangles = tritri::detail::checked_triangles(F, soup.vertices.size(), where + ": F");
+  const std::size_t nf = soup.triangles.size();
+  if (labels && static_cast<std::size_t>(labels->size()) != nf)
+    throw std::invalid_argument(where + ": labels must have one entry per row of F (" + std::to_string(nf) +
+                                "), got " + std::to_string(labels->size()));
+  soup.label_set.resize(nf);
+  soup.source.resize(nf);
+  std::map<long long, int> set_of_label;  // label -> index of {label} in soup.label_sets
+  for (std::size_t r = 0; r < nf; ++r) {
+    const long long label = labels ? static_cast<long long>((*labels)(static_cast<Eigen::Index>(r))) : 0;
+    if (label < 0 || label > INT_MAX)
+      throw std::invalid_argument(where + ": labels(" + std::to_string(r) + ") = " + std::to_string(label) +
+                                  " is not in [0, " + std::to_string(INT_MAX) + "]");
     auto [it, added] = set_of_label.try_emplace(label, static_cast<int>(soup.label_sets.size()));
     if (added) soup.label_sets.push_back({static_cast<std::uint32_t>(label)});
     soup.label_set[r] = it->second;
-    soup.source[r] = r;
+    soup.source[r] = static_cast<std::int64_t>(r);
   }
   return soup;
 }
 
-}  // namespace detail
-
-inline EigenArrangement arrange(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ArrangeOptions& options,
-                                const Eigen::VectorXi* labels = nullptr) {
-  ArrangeResult result = arrange(detail::eigen_soup(V, F, labels), options);
+// arrange() below for any Eigen matrix types (the Python module passes int64 indices and
+// labels: they are range-checked before they are narrowed).
+template <class DV, class DF, class DL>
+EigenArrangement arrange_eigen(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<DF>& F,
+                               const ArrangeOptions& options, const Eigen::MatrixBase<DL>* labels,
+                               const std::string& where) {
+  ArrangeResult result = arrange_validated(eigen_soup(V, F, labels, where), options);
   OutputMesh& mesh = result.mesh;
 
   EigenArrangement out;
@@ -162,6 +148,13 @@ inline EigenArrangement arrange(const Eigen::MatrixXd& V, const Eigen::MatrixXi&
   out.label_sets = std::move(mesh.label_sets);
   out.stats = std::move(result.stats);
   return out;
+}
+
+}  // namespace detail
+
+inline EigenArrangement arrange(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ArrangeOptions& options,
+                                const Eigen::VectorXi* labels = nullptr) {
+  return detail::arrange_eigen(V, F, options, labels, "arrangements::arrange");
 }
 
 }  // namespace arrangements

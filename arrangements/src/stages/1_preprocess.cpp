@@ -56,27 +56,6 @@ bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
          tritri::orient2d(a, b, c, Plane::ZX) == Sign::Zero;
 }
 
-void check_well_formed(const TriangleSoup& in) {
-  const std::size_t nf = in.triangles.size();
-  if (in.label_set.size() != nf || in.source.size() != nf || (!in.polygon.empty() && in.polygon.size() != nf))
-    throw std::invalid_argument("preprocess: label_set, source (and polygon) must have one entry per triangle");
-  for (std::size_t v = 0; v < in.vertices.size(); ++v)
-    for (double c : in.vertices[v])
-      if (!std::isfinite(c))
-        throw std::invalid_argument("preprocess: vertex " + std::to_string(v) + " has a non-finite coordinate");
-  const long long nv = static_cast<long long>(in.vertices.size());
-  const long long ns = static_cast<long long>(in.label_sets.size());
-  for (std::size_t t = 0; t < nf; ++t) {
-    for (int i : in.triangles[t])
-      if (i < 0 || i >= nv)
-        throw std::invalid_argument("preprocess: triangle " + std::to_string(t) + " has vertex index " +
-                                    std::to_string(i) + " out of range");
-    if (in.label_set[t] < 0 || in.label_set[t] >= ns)
-      throw std::invalid_argument("preprocess: triangle " + std::to_string(t) + " has label set index " +
-                                  std::to_string(in.label_set[t]) + " out of range");
-  }
-}
-
 // Sorted, without repeats.
 LabelSet normalized(LabelSet s) {
   std::sort(s.begin(), s.end());
@@ -105,7 +84,6 @@ bool scale_exactly(std::vector<Vec3>& vertices, int k) {
 }  // namespace
 
 TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options, PreprocessStats& stats) {
-  check_well_formed(in);
   stats = PreprocessStats{};
 
   // Distinct positions, in input order.

@@ -1,10 +1,11 @@
 // arrangements/src/stages/1_preprocess.h
 //
-// Stages 2 and 3 of the pipeline: clean a TriangleSoup exactly, and optionally scale it by
-// a power of two.
+// Stage 1 of the pipeline: clean a TriangleSoup exactly, and optionally scale it by a
+// power of two.
 //
 // TriangleSoup preprocess(in, options, stats)
-//   in       a soup (e.g. from load_triangle_soup); finite coordinates, valid indices
+//   in       a valid soup (validate_soup in arrangements/arrange.h: finite coordinates,
+//            indices in range, per-triangle lists of the right size; not checked again)
 //   options  .scale: multiply every coordinate by 2^k (below)
 // returns the soup with
 //   vertices    the distinct positions used by a kept triangle, in first-use order (the
@@ -42,8 +43,6 @@
 // (scale_exponent 0; the later stages are exact at any magnitude, only slower). All-zero coordinates (no triangle survives
 // anyway) give k = 0.
 //
-// Throws std::invalid_argument for an ill-formed soup (index or label index out of range,
-// sizes that do not match, a non-finite coordinate).
 // Cost: expected O(#V + #F + total labels of duplicates) (hashing), plus one to three exact
 // orient2d per triangle; distinct label sets are kept in a std::map.
 #pragma once

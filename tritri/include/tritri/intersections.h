@@ -47,6 +47,7 @@
 #include <utility>
 #include <vector>
 
+#include "tritri/box_pairs.h"
 #include "tritri/detail/mesh_pairs.h"
 #include "tritri/intersecting_pair.h"
 
@@ -64,18 +65,20 @@ std::vector<IntersectingPair> intersections(const Eigen::MatrixBase<DerivedV1>& 
   const std::vector<detail::MeshTriangle> tris2 =
       detail::checked_triangles(F2, points2.size(), "tritri::intersections: F2");
 
-  // One search over both meshes: box ids below #F1 are mesh 1, the rest mesh 2. (A
-  // bipartite search would skip the pairs within each mesh, but CGAL's bipartite mode was
-  // found to lose closed boxes that only touch: see arrangements/src/candidate_pairs.cpp.)
-  std::vector<detail::TriangleBox> boxes;
-  boxes.reserve(tris1.size() + tris2.size());
-  detail::append_boxes(points1, tris1, boxes);
-  detail::append_boxes(points2, tris2, boxes);
-  const std::size_t n1 = tris1.size();
+  // One search over both meshes, each mesh one group (so pairs within a mesh are never
+  // enumerated): triangle ids below #F1 are mesh 1, the rest mesh 2.
+  std::vector<detail::MeshPoint> points(points1);
+  points.insert(points.end(), points2.begin(), points2.end());
+  std::vector<detail::MeshTriangle> tris(tris1);
+  const int offset = static_cast<int>(points1.size());
+  for (detail::MeshTriangle t : tris2) tris.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  std::vector<std::int64_t> group(tris1.size(), 0);
+  group.resize(tris.size(), 1);
+  const int n1 = static_cast<int>(tris1.size());
   std::vector<std::pair<int, int>> pairs;
-  for (const auto& [a, b] : detail::overlapping_boxes(boxes))
-    if (a < n1 && b >= n1) pairs.emplace_back(int(a), int(b - n1));
-  boxes = {};
+  for (const auto& [a, b] : overlapping_triangle_pairs(points, tris, 0, group)) pairs.emplace_back(a, b - n1);
+  points = {};
+  tris = {};
 
   auto corners = [&](const std::pair<int, int>& p) {
     const detail::MeshTriangle &a = tris1[p.first], &b = tris2[p.second];

@@ -55,6 +55,7 @@
 #include <utility>
 #include <vector>
 
+#include "tritri/box_pairs.h"
 #include "tritri/detail/mesh_pairs.h"
 #include "tritri/intersecting_pair.h"
 
@@ -67,12 +68,7 @@ std::vector<IntersectingPair> self_intersections(const Eigen::MatrixBase<Derived
   const std::vector<detail::MeshTriangle> tris =
       detail::checked_triangles(F, points.size(), "tritri::self_intersections: F");
 
-  std::vector<detail::TriangleBox> boxes;
-  boxes.reserve(tris.size());
-  detail::append_boxes(points, tris, boxes);
-  std::vector<std::pair<int, int>> pairs;
-  for (const auto& [a, b] : detail::overlapping_boxes(boxes)) pairs.emplace_back(int(a), int(b));
-  boxes = {};
+  const std::vector<std::pair<int, int>> pairs = overlapping_triangle_pairs(points, tris);
 
   auto corners = [&](const std::pair<int, int>& p) {
     const detail::MeshTriangle &a = tris[p.first], &b = tris[p.second];

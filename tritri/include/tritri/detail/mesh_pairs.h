@@ -1,14 +1,13 @@
 // tritri/detail/mesh_pairs.h
 //
 // The shared machinery of self_intersections.h and intersections.h: input checks that
-// turn Eigen matrices into plain point / triangle lists, bounding-box candidate pairs
-// (CGAL's box_self_intersection_d) and their parallel classification (oneTBB). Not a
+// turn Eigen matrices into plain point / triangle lists (also used by the arrangement
+// pipeline's Eigen and Python entry points: the one place these facts are checked), and
+// the parallel classification of candidate pairs (oneTBB) found by box_pairs.h. Not a
 // public API: use the two functions.
 #pragma once
 
-#include <CGAL/box_intersection_d.h>
 #include <Eigen/Core>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -22,6 +21,7 @@
 #include <vector>
 
 #include "tritri/classify.h"
+#include "tritri/detail/ordered_parallel.h"
 #include "tritri/double_kernel.h"
 #include "tritri/intersecting_pair.h"
 #include "tritri/result.h"
@@ -39,6 +39,8 @@ std::vector<MeshPoint> checked_vertices(const Eigen::MatrixBase<DerivedV>& V, co
   if (V.size() == 0) return {};
   if (V.cols() != 3)
     throw std::invalid_argument(where + " must have 3 columns (x, y, z), got " + std::to_string(V.cols()));
+  if (V.rows() > INT_MAX)  // triangles index vertices with int
+    throw std::invalid_argument(where + " has more than " + std::to_string(INT_MAX) + " rows");
   std::vector<MeshPoint> points(static_cast<std::size_t>(V.rows()));
   for (Eigen::Index r = 0; r < V.rows(); ++r)
     for (Eigen::Index c = 0; c < 3; ++c) {
@@ -77,74 +79,20 @@ std::vector<MeshTriangle> checked_triangles(const Eigen::MatrixBase<DerivedF>& F
   return triangles;
 }
 
-// A triangle's closed axis-aligned bounding box; its id is the triangle's index in the
-// concatenation of the meshes (a stable id, unlike CGAL's global counter).
-class TriangleBox {
- public:
-  using NT = double;
-  using ID = std::size_t;
-
-  TriangleBox(const MeshPoint& a, const MeshPoint& b, const MeshPoint& c, std::size_t id) : id_(id) {
-    for (int k = 0; k < 3; ++k) {
-      lo_[k] = std::min({a[k], b[k], c[k]});
-      hi_[k] = std::max({a[k], b[k], c[k]});
-    }
-  }
-  static int dimension() noexcept { return 3; }
-  double min_coord(int k) const noexcept { return lo_[k]; }
-  double max_coord(int k) const noexcept { return hi_[k]; }
-  std::size_t id() const noexcept { return id_; }
-
- private:
-  std::array<double, 3> lo_, hi_;
-  std::size_t id_;
-};
-
-inline void append_boxes(const std::vector<MeshPoint>& V, const std::vector<MeshTriangle>& F,
-                         std::vector<TriangleBox>& boxes) {
-  const std::size_t first = boxes.size();
-  for (std::size_t t = 0; t < F.size(); ++t)
-    boxes.emplace_back(V[F[t][0]], V[F[t][1]], V[F[t][2]], first + t);
-}
-
-// Every pair of ids (a < b) of boxes that overlap or touch, sorted, each once.
-inline std::vector<std::pair<std::size_t, std::size_t>> overlapping_boxes(std::vector<TriangleBox>& boxes) {
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  if (boxes.size() < 2) return pairs;
-  auto report = [&pairs](const TriangleBox& a, const TriangleBox& b) {
-    if (a.id() != b.id()) pairs.emplace_back(std::min(a.id(), b.id()), std::max(a.id(), b.id()));
-  };
-  const CGAL::Box_intersection_d::Box_traits_d<TriangleBox> traits;
-  CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), report, traits,
-                                                      std::ptrdiff_t(10), CGAL::Box_intersection_d::CLOSED);
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  return pairs;
-}
-
-// Classifies candidate pairs in parallel: fixed chunks, each filling its own list, joined
-// in order, so the output keeps the order of `pairs` for any number of threads.
-// keep(index into pairs, Result) decides what is reported.
+// Classifies candidate pairs in parallel (collect_in_order: the output keeps the order of
+// `pairs` for any number of threads). keep(index into pairs, Result) decides what is
+// reported.
 template <class Triangles, class Keep>
 std::vector<IntersectingPair> classify_candidates(const std::vector<std::pair<int, int>>& pairs,
                                                   const Triangles& triangles, const Keep& keep) {
-  constexpr std::size_t chunk = 1024;
-  const std::size_t chunks = (pairs.size() + chunk - 1) / chunk;
-  std::vector<std::vector<IntersectingPair>> found(chunks);
-  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
-    const std::size_t end = std::min(pairs.size(), (c + 1) * chunk);
-    for (std::size_t k = c * chunk; k < end; ++k) {
-      const auto [a0, a1, a2, b0, b1, b2] = triangles(pairs[k]);
-      Result r = classify<DoubleKernel>(*a0, *a1, *a2, *b0, *b1, *b2);
-      if (keep(k, r)) found[c].push_back({pairs[k].first, pairs[k].second, r});
-    }
-  });
-  std::size_t total = 0;
-  for (const auto& f : found) total += f.size();
-  std::vector<IntersectingPair> out;
-  out.reserve(total);
-  for (const auto& f : found) out.insert(out.end(), f.begin(), f.end());
-  return out;
+  return collect_in_order<IntersectingPair>(
+      pairs.size(), 1024, [&](std::size_t, std::size_t begin, std::size_t end, std::vector<IntersectingPair>& out) {
+        for (std::size_t k = begin; k < end; ++k) {
+          const auto [a0, a1, a2, b0, b1, b2] = triangles(pairs[k]);
+          Result r = classify<DoubleKernel>(*a0, *a1, *a2, *b0, *b1, *b2);
+          if (keep(k, r)) out.push_back({pairs[k].first, pairs[k].second, r});
+        }
+      });
 }
 
 }  // namespace tritri::detail
