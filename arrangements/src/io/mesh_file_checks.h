@@ -1,10 +1,10 @@
 // arrangements/src/io/mesh_file_checks.h (internal to the mesh readers and writers)
 //
-// Helpers shared by the mesh readers (load_triangle_soup's streaming readers, see
-// mesh_reader.h, and read_exact_mesh) and by mesh_format.h and write_mesh: refusing with
-// InputError ("PATH: what"), quoting tokens for messages (the one place where bytes that
-// are not printable are escaped), strict number parsing, and a cursor over the lines of
-// text held in memory.
+// Helpers shared by the mesh readers (load_triangle_soup's streaming readers and
+// read_exact_mesh, which both open files through FileBytes, see mesh_reader.h) and by
+// mesh_format.h and write_mesh: refusing with InputError ("PATH: what"), quoting tokens for
+// messages (the one place where bytes that are not printable are escaped), strict number
+// parsing, and a cursor over the lines of text held in memory.
 #pragma once
 
 #include <charconv>
@@ -12,9 +12,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -33,19 +30,6 @@ namespace arrangements::detail {
 [[noreturn]] inline void refuse_at_line(InputErrorKind kind, const std::string& path, long line,
                                         const std::string& what) {
   refuse(kind, path, "line " + std::to_string(line) + ": " + what);
-}
-
-// The whole file, or InputError (unreadable_file) naming why not.
-inline std::string read_whole_file(const std::string& path) {
-  std::error_code ec;
-  const std::filesystem::file_status status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) refuse(InputErrorKind::unreadable_file, path, "no such file");
-  if (!std::filesystem::is_regular_file(status)) refuse(InputErrorKind::unreadable_file, path, "not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) refuse(InputErrorKind::unreadable_file, path, "cannot open the file");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) refuse(InputErrorKind::unreadable_file, path, "read error");
-  return bytes;
 }
 
 // A token for a message: quoted, shortened; bytes that are not printable ASCII (and the

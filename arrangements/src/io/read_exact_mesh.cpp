@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "io/mesh_file_checks.h"
 #include "io/mesh_format.h"
+#include "io/mesh_reader.h"
 
 namespace arrangements {
 namespace {
