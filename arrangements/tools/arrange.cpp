@@ -5,11 +5,9 @@
 
 #include <chrono>
 #include <cstdio>
-#include <cctype>
 #include <cstring>
 #include <cstdlib>
 #include <exception>
-#include <filesystem>
 #include <optional>
 #include <set>
 #include <string>
@@ -19,6 +17,7 @@
 #include "arrangements/arrange.h"
 #include "arrangements/check_arrangement.h"
 #include "arrangements/input_error.h"
+#include "io/mesh_format.h"
 #include "support/process_usage.h"
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/stats_json.h"
@@ -130,11 +129,12 @@ int main(int argc, char** argv) {
   }
   if (inputs.empty()) usage_error("no input file");
   if (output) {
-    std::string ext = std::filesystem::path(*output).extension().string();
-    for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (ext != ".obj" && ext != ".off" && ext != ".ply")
-      usage_error("unknown output format '" + *output + "' (known: .obj .off .ply)");
-    if (exact && ext == ".ply") usage_error("--exact needs an .obj or .off output");
+    using arrangements::detail::kWriteFormats;
+    const auto format = arrangements::detail::format_of(*output, kWriteFormats);
+    if (!format)
+      usage_error("unknown output format '" + *output + "' (known: " +
+                  arrangements::detail::extension_list(kWriteFormats) + ")");
+    if (exact && *format == arrangements::detail::MeshFormat::ply) usage_error("--exact needs an .obj or .off output");
   }
   const int workers = threads > 0 ? threads : tbb::info::default_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, workers);

@@ -11,8 +11,9 @@
 #include <system_error>
 #include <vector>
 
-#include "io/triangulate_polygon.h"
+#include "io/mesh_format.h"
 #include "io/mesh_reader.h"
+#include "io/triangulate_polygon.h"
 
 namespace arrangements {
 
@@ -67,6 +68,17 @@ std::size_t FileBytes::refill(std::size_t n) {
   return end_;
 }
 
+std::string read_whole_file(const std::string& path) {
+  FileBytes in(path);
+  std::string bytes;
+  bytes.reserve(static_cast<std::size_t>(in.size()));
+  while (in.fill(1) > 0) {
+    bytes.append(in.data(), in.available());
+    in.consume(in.available());
+  }
+  return bytes;
+}
+
 void SoupBuilder::refuse_too_large(const char* what) const {
   refuse(InputErrorKind::too_large, path_,
          std::string("more than ") + std::to_string(kMaxIndexCount) + " " + what +
@@ -106,36 +118,19 @@ void SoupBuilder::finish() {
 
 }  // namespace detail
 
-namespace {
-
-using detail::lowercase_extension;
+using detail::MeshFormat;
 using detail::refuse;
 
-enum class Format { obj, off, stl, ply };
-
-Format format_of(const std::string& path) {
-  const std::string ext = lowercase_extension(path);
-  if (ext == ".obj") return Format::obj;
-  if (ext == ".off") return Format::off;
-  if (ext == ".stl") return Format::stl;
-  if (ext == ".ply") return Format::ply;
-  refuse(InputErrorKind::unknown_format, path,
-         (ext.empty() ? std::string("no file extension") : "unknown file extension '" + ext + "'") +
-             " (supported: .obj .off .stl .ply, any case)");
-}
-
-}  // namespace
-
 TriangleSoup load_triangle_soup(const std::string& path, std::uint32_t label) {
-  const Format format = format_of(path);
+  const MeshFormat format = detail::format_of_or_refuse(path, detail::kLoadFormats, "supported:");
   detail::FileBytes in(path);
   if (in.size() == 0 && in.fill(1) == 0) refuse(InputErrorKind::empty_mesh, path, "the file is empty");
   detail::SoupBuilder builder(path);
   switch (format) {
-    case Format::obj: detail::read_obj(in, builder); break;
-    case Format::off: detail::read_off(in, builder); break;
-    case Format::stl: detail::read_stl(in, builder); break;
-    case Format::ply: detail::read_ply(in, builder); break;
+    case MeshFormat::obj: detail::read_obj(in, builder); break;
+    case MeshFormat::off: detail::read_off(in, builder); break;
+    case MeshFormat::stl: detail::read_stl(in, builder); break;
+    case MeshFormat::ply: detail::read_ply(in, builder); break;
   }
   if (builder.triangles.empty()) refuse(InputErrorKind::empty_mesh, path, "the mesh has no faces");
   builder.finish();

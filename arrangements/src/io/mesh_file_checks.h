@@ -1,19 +1,17 @@
-// arrangements/src/mesh_file_checks.h (internal to the mesh readers)
+// arrangements/src/io/mesh_file_checks.h (internal to the mesh readers and writers)
 //
-// Helpers shared by the mesh readers (load_triangle_soup's streaming readers, see
-// mesh_reader.h, and read_exact_mesh): refusing with InputError, quoting tokens for
-// messages, strict number parsing, and a cursor over text held in memory.
+// Helpers shared by the mesh readers (load_triangle_soup's streaming readers and
+// read_exact_mesh, which both open files through FileBytes, see mesh_reader.h) and by
+// mesh_format.h and write_mesh: refusing with InputError ("PATH: what"), quoting tokens for
+// messages (the one place where bytes that are not printable are escaped), strict number
+// parsing, and a cursor over the lines of text held in memory.
 #pragma once
 
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -32,26 +30,6 @@ namespace arrangements::detail {
 [[noreturn]] inline void refuse_at_line(InputErrorKind kind, const std::string& path, long line,
                                         const std::string& what) {
   refuse(kind, path, "line " + std::to_string(line) + ": " + what);
-}
-
-// The extension of path in lower case, with its dot ("" if none).
-inline std::string lowercase_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
-// The whole file, or InputError (unreadable_file) naming why not.
-inline std::string read_whole_file(const std::string& path) {
-  std::error_code ec;
-  const std::filesystem::file_status status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) refuse(InputErrorKind::unreadable_file, path, "no such file");
-  if (!std::filesystem::is_regular_file(status)) refuse(InputErrorKind::unreadable_file, path, "not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) refuse(InputErrorKind::unreadable_file, path, "cannot open the file");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) refuse(InputErrorKind::unreadable_file, path, "read error");
-  return bytes;
 }
 
 // A token for a message: quoted, shortened; bytes that are not printable ASCII (and the
@@ -118,43 +96,13 @@ bool parse_integer(std::string_view token, T& value) {
 
 inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f'; }
 
-// Walks text by tokens or by lines, counting lines (1-based).
+// Walks text held in memory line by line, counting lines (1-based).
 class TextCursor {
  public:
-  explicit TextCursor(std::string_view text, std::size_t start = 0) : text_(text), pos_(start) {}
+  explicit TextCursor(std::string_view text) : text_(text) {}
 
   bool at_end() const { return pos_ >= text_.size(); }
-  long line() const { return line_; }
-  std::size_t position() const { return pos_; }
-
-  void skip_whitespace() {
-    while (pos_ < text_.size() && is_space(text_[pos_])) advance();
-  }
-  // Whitespace and comment lines ('#' up to the end of the line), as CGAL's OFF scanner.
-  void skip_whitespace_and_comments() {
-    for (;;) {
-      skip_whitespace();
-      if (pos_ < text_.size() && text_[pos_] == '#')
-        rest_of_line();
-      else
-        return;
-    }
-  }
-  char peek() const { return at_end() ? '\0' : text_[pos_]; }
-  // The run of characters from the cursor that satisfy pred (pred must refuse '\n').
-  template <class Pred>
-  std::string_view take_while(Pred pred) {
-    const std::size_t begin = pos_;
-    while (pos_ < text_.size() && pred(text_[pos_])) ++pos_;
-    return text_.substr(begin, pos_ - begin);
-  }
-  // The next whitespace-separated token (empty at the end); line() is then its line.
-  std::string_view token() {
-    skip_whitespace();
-    const std::size_t begin = pos_;
-    while (pos_ < text_.size() && !is_space(text_[pos_])) ++pos_;
-    return text_.substr(begin, pos_ - begin);
-  }
+  long line() const { return line_; }  // of the line the cursor is on
   // The text up to the end of the current line (without '\n' and a trailing '\r'); the
   // cursor moves to the start of the next line.
   std::string_view rest_of_line() {
@@ -162,17 +110,16 @@ class TextCursor {
     std::size_t end = text_.find('\n', pos_);
     if (end == std::string_view::npos) end = text_.size();
     pos_ = end;
-    if (pos_ < text_.size()) advance();
+    if (pos_ < text_.size()) {
+      ++pos_;
+      ++line_;
+    }
     std::string_view s = text_.substr(begin, end - begin);
     if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
     return s;
   }
 
  private:
-  void advance() {
-    if (text_[pos_] == '\n') ++line_;
-    ++pos_;
-  }
   std::string_view text_;
   std::size_t pos_ = 0;
   long line_ = 1;

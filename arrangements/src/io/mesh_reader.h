@@ -1,9 +1,11 @@
-// arrangements/src/mesh_reader.h (internal to load_triangle_soup)
+// arrangements/src/io/mesh_reader.h (internal to load_triangle_soup and read_exact_mesh)
 //
 // The pieces of the one-pass mesh readers (read_obj.cpp, read_off.cpp, read_stl.cpp,
 // read_ply.cpp): each reads its file as a stream and validates and fills a SoupBuilder in
 // the same pass, so memory holds the parsed arrays plus one buffer of the file.
-//   FileBytes    the file in chunks of 1 MiB (a longer line grows the buffer)
+//   FileBytes    the file in chunks of 1 MiB (a longer line grows the buffer); the one
+//                place where a mesh file is opened and read (read_whole_file for
+//                read_exact_mesh too)
 //   LineReader   lines ending in LF, CRLF or CR (a UTF-8 BOM at the start is skipped)
 //   TokenReader  whitespace-separated tokens across lines, with their line numbers
 //   SoupBuilder  vertices and faces; polygons are triangulated by finish()
@@ -55,6 +57,10 @@ class FileBytes {
   std::uint64_t size_ = 0, consumed_ = 0;
   bool eof_ = false;
 };
+
+// The whole file, read through FileBytes (and refused as FileBytes refuses it): for
+// read_exact_mesh, which parses text held in memory.
+std::string read_whole_file(const std::string& path);
 
 inline bool is_line_end(char c) { return c == '\n' || c == '\r'; }
 

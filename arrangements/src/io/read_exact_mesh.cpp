@@ -5,18 +5,15 @@
 #include <gmp.h>
 
 #include <algorithm>
-#include <cctype>
+#include <array>
 #include <cstdint>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <vector>
 
-#include "io/mesh_file_checks.h"
+#include "io/mesh_format.h"
+#include "io/mesh_reader.h"
 
 namespace arrangements {
 namespace {
@@ -24,21 +21,9 @@ namespace {
 using detail::quoted;
 using detail::refuse;
 using detail::refuse_at_line;
-using detail::lowercase_extension;
 using detail::read_whole_file;
 
 constexpr long kMaxDecimalExponent = 4096;
-
-enum class Format { obj, off };
-
-Format format_of(const std::string& path) {
-  const std::string ext = lowercase_extension(path);
-  if (ext == ".obj") return Format::obj;
-  if (ext == ".off") return Format::off;
-  refuse(InputErrorKind::unknown_format, path,
-         (ext.empty() ? std::string("no file extension") : "unknown file extension '" + ext + "'") +
-             " (read_exact_mesh reads .obj .off, any case)");
-}
 
 bool all_digits(std::string_view s) {
   if (s.empty()) return false;
@@ -320,9 +305,9 @@ ExactMesh read_off(const std::string& path, std::string_view text) {
 }  // namespace
 
 ExactMesh read_exact_mesh(const std::string& path) {
-  const Format format = format_of(path);
+  const detail::MeshFormat format = detail::format_of_or_refuse(path, detail::kExactFormats, "read_exact_mesh reads");
   const std::string bytes = read_whole_file(path);
-  return format == Format::obj ? read_obj(path, bytes) : read_off(path, bytes);
+  return format == detail::MeshFormat::obj ? read_obj(path, bytes) : read_off(path, bytes);
 }
 
 }  // namespace arrangements

@@ -1,13 +1,10 @@
 // Stage 7: OutputMesh -> OBJ / OFF / PLY file and provenance (see write_mesh.h).
 #include "arrangements/write_mesh.h"
 
-#include <fcntl.h>
 #include <gmp.h>
 #include <unistd.h>
 
-#include <atomic>
-#include <cctype>
-#include <cerrno>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -21,24 +18,17 @@
 #include <system_error>
 #include <vector>
 
+#include "io/atomic_file.h"
+#include "io/mesh_file_checks.h"
+#include "io/mesh_format.h"
+#include "io/write_off.h"
+
 namespace arrangements {
 namespace {
 
 namespace fs = std::filesystem;
-
-enum class Format { obj, off, ply };
-
-Format format_of(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".obj") return Format::obj;
-  if (ext == ".off") return Format::off;
-  if (ext == ".ply") return Format::ply;
-  throw InputError(InputErrorKind::unknown_format,
-                   path + ": " +
-                       (ext.empty() ? std::string("no file extension") : "unknown file extension '" + ext + "'") +
-                       " (write_mesh writes .obj .off .ply, any case)");
-}
+using detail::AtomicFile;
+using detail::MeshFormat;
 
 void check_mesh(const std::string& path, const OutputMesh& mesh) {
   const std::size_t nt = mesh.triangles.size();
@@ -65,82 +55,6 @@ void refuse_folder(const std::string& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw std::runtime_error(path + ": is a folder, cannot write a file there");
 }
-
-std::string system_reason(int err) { return std::generic_category().message(err); }
-
-// A file written under a temporary name in the folder of its final path and renamed into
-// place by commit(); the destructor removes the temporary file if commit() did not happen.
-class AtomicFile {
- public:
-  explicit AtomicFile(std::string final_path) : final_(std::move(final_path)) {
-    static std::atomic<unsigned> counter{0};
-    // O_EXCL: never reuse a file that someone else (another thread, process) is writing.
-    for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
-      tmp_ = final_ + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-      fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-      if (fd_ < 0 && errno != EEXIST) break;
-    }
-    if (fd_ < 0) {
-      const int err = errno;
-      throw std::runtime_error(final_ + ": cannot create a temporary file beside it (" + system_reason(err) + ")");
-    }
-    buffer_.reserve(kBufferSize);
-  }
-  AtomicFile(const AtomicFile&) = delete;
-  AtomicFile& operator=(const AtomicFile&) = delete;
-  ~AtomicFile() {
-    if (fd_ >= 0) ::close(fd_);
-    if (!committed_) ::unlink(tmp_.c_str());
-  }
-
-  void append(std::string_view bytes) {
-    buffer_.append(bytes);
-    if (buffer_.size() >= kBufferSize) flush();
-  }
-  void append(char c) {
-    buffer_.push_back(c);
-    if (buffer_.size() >= kBufferSize) flush();
-  }
-  // Writes what is buffered, flushes it to disk (so that a crash after the rename cannot
-  // leave an empty file under the final name) and closes the file.
-  void finish() {
-    flush();
-    if (::fsync(fd_) != 0 && errno != EINVAL) fail("cannot flush to disk");  // EINVAL: no fsync (pipes, ...)
-    const int fd = fd_;
-    fd_ = -1;
-    if (::close(fd) != 0) fail("cannot close");
-  }
-  void commit() {
-    if (::rename(tmp_.c_str(), final_.c_str()) != 0) fail("cannot rename the temporary file into place");
-    committed_ = true;
-  }
-  const std::string& final_path() const { return final_; }
-
- private:
-  static constexpr std::size_t kBufferSize = 1 << 20;
-
-  void flush() {
-    const char* p = buffer_.data();
-    std::size_t left = buffer_.size();
-    while (left > 0) {
-      const ssize_t n = ::write(fd_, p, left);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) fail("write failed");
-      p += n;
-      left -= static_cast<std::size_t>(n);
-    }
-    buffer_.clear();
-  }
-  [[noreturn]] void fail(const char* what) const {
-    const int err = errno;  // before the message's allocations can change it
-    throw std::runtime_error(final_ + ": " + what + " (" + system_reason(err) + ")");
-  }
-
-  std::string final_, tmp_;
-  int fd_ = -1;
-  std::string buffer_;
-  bool committed_ = false;
-};
 
 // ---- text formatting -------------------------------------------------------------------
 
@@ -187,30 +101,35 @@ std::vector<Vec3> rounded_vertices(const std::string& path, const OutputMesh& me
   return out;
 }
 
-// The vertex lines of OBJ ("v X Y Z") or OFF ("X Y Z").
-void append_vertices(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& rounded, bool exact,
-                     std::string_view prefix) {
-  std::string scratch;
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-    f.append(prefix);
-    if (exact) {
-      const std::array<CGAL::Gmpq, 3> q = tritri::to_exact(mesh.vertices[i]);
-      for (int k = 0; k < 3; ++k) {
-        if (k) f.append(' ');
-        append_rational(f, q[k], scratch);
-      }
-    } else {
-      for (int k = 0; k < 3; ++k) {
-        if (k) f.append(' ');
-        append_double(f, rounded[i][k]);
-      }
-    }
-    f.append('\n');
+// "X Y Z": 17 significant digits each.
+void append_coordinates(AtomicFile& f, const Vec3& v) {
+  for (int k = 0; k < 3; ++k) {
+    if (k) f.append(' ');
+    append_double(f, v[k]);
+  }
+}
+
+// "X Y Z" of vertex i: exact rationals, or the rounded doubles.
+void append_coordinates(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& rounded, bool exact,
+                        std::size_t i, std::string& scratch) {
+  if (!exact) {
+    append_coordinates(f, rounded[i]);
+    return;
+  }
+  const std::array<CGAL::Gmpq, 3> q = tritri::to_exact(mesh.vertices[i]);
+  for (int k = 0; k < 3; ++k) {
+    if (k) f.append(' ');
+    append_rational(f, q[k], scratch);
   }
 }
 
 void write_obj(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& rounded, bool exact) {
-  append_vertices(f, mesh, rounded, exact, "v ");
+  std::string scratch;
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    f.append("v ");
+    append_coordinates(f, mesh, rounded, exact, i, scratch);
+    f.append('\n');
+  }
   for (const Tri& t : mesh.triangles) {
     f.append('f');
     for (int i : t) {
@@ -221,14 +140,21 @@ void write_obj(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& r
   }
 }
 
-void write_off(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& rounded, bool exact) {
+// The one OFF writer (write_mesh and write_off): "OFF", "#V #F 0", one line per vertex
+// (append_vertex(i) writes its coordinates), then "3 a b c" per triangle.
+template <class AppendVertex>
+void write_off_text(AtomicFile& f, std::size_t vertex_count, const std::vector<Tri>& triangles,
+                    AppendVertex append_vertex) {
   f.append("OFF\n");
-  append_integer(f, mesh.vertices.size());
+  append_integer(f, vertex_count);
   f.append(' ');
-  append_integer(f, mesh.triangles.size());
+  append_integer(f, triangles.size());
   f.append(" 0\n");
-  append_vertices(f, mesh, rounded, exact, "");
-  for (const Tri& t : mesh.triangles) {
+  for (std::size_t i = 0; i < vertex_count; ++i) {
+    append_vertex(i);
+    f.append('\n');
+  }
+  for (const Tri& t : triangles) {
     f.append('3');
     for (int i : t) {
       f.append(' ');
@@ -236,6 +162,12 @@ void write_off(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& r
     }
     f.append('\n');
   }
+}
+
+void write_off(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& rounded, bool exact) {
+  std::string scratch;
+  write_off_text(f, mesh.vertices.size(), mesh.triangles,
+                 [&](std::size_t i) { append_coordinates(f, mesh, rounded, exact, i, scratch); });
 }
 
 void write_provenance(AtomicFile& f, const OutputMesh& mesh) {
@@ -316,23 +248,24 @@ void write_ply(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& r
 
 void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOptions& options) {
   // Everything that can be refused is refused before a file is created.
-  const Format format = format_of(path);
-  if (format == Format::ply && options.exact)
-    throw InputError(InputErrorKind::unsupported_variant,
-                     path + ": exact coordinates are written only to .obj and .off (PLY holds doubles)");
+  const MeshFormat format = detail::format_of_or_refuse(path, detail::kWriteFormats, "write_mesh writes");
+  if (format == MeshFormat::ply && options.exact)
+    detail::refuse(InputErrorKind::unsupported_variant, path,
+                   "exact coordinates are written only to .obj and .off (PLY holds doubles)");
   check_mesh(path, mesh);
-  if (format == Format::ply) check_ply_limits(path, mesh);
+  if (format == MeshFormat::ply) check_ply_limits(path, mesh);
   const std::string side_path = path + ".provenance.csv";
-  const bool has_side_file = format != Format::ply;
+  const bool has_side_file = format != MeshFormat::ply;
   refuse_folder(path);
   if (has_side_file) refuse_folder(side_path);
   const std::vector<Vec3> rounded = options.exact ? std::vector<Vec3>{} : rounded_vertices(path, mesh);
 
   AtomicFile file(path);
   switch (format) {
-    case Format::obj: write_obj(file, mesh, rounded, options.exact); break;
-    case Format::off: write_off(file, mesh, rounded, options.exact); break;
-    case Format::ply: write_ply(file, mesh, rounded); break;
+    case MeshFormat::obj: write_obj(file, mesh, rounded, options.exact); break;
+    case MeshFormat::off: write_off(file, mesh, rounded, options.exact); break;
+    case MeshFormat::ply: write_ply(file, mesh, rounded); break;
+    case MeshFormat::stl: throw std::logic_error("write_mesh: .stl is not in kWriteFormats");
   }
   file.finish();
   std::optional<AtomicFile> side;
@@ -349,6 +282,13 @@ void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOpti
     if (side) ::unlink(side_path.c_str());
     throw;
   }
+}
+
+void write_off(const std::string& path, const std::vector<Vec3>& V, const std::vector<Tri>& F) {
+  AtomicFile file(path);
+  write_off_text(file, V.size(), F, [&](std::size_t i) { append_coordinates(file, V[i]); });
+  file.finish();
+  file.commit();
 }
 
 }  // namespace arrangements

@@ -1,0 +1,64 @@
+// arrangements/src/io/atomic_file.h (internal to the mesh writers)
+//
+// AtomicFile: the one way this project writes a file that others may read: the bytes go
+// to a new temporary file beside the final path and are renamed into place once complete.
+//
+//   AtomicFile f(path);   creates "path.tmp-PID-N" in the folder of path (O_EXCL: never a
+//                         file that another thread or process is writing)
+//   f.append(bytes)       buffered (1 MiB) writes
+//   f.finish()            writes what is buffered, flushes the file to disk and closes it
+//   f.commit()            renames the temporary file to path (after finish())
+//   ~AtomicFile()         removes the temporary file unless commit() succeeded
+//
+// Guarantees: path holds either what it held before or every byte appended, never a part
+// of them; an old file at path is replaced only by a successful commit(); after a failure
+// (an exception from any call, or no commit()) the temporary file is removed once the
+// AtomicFile is destroyed; once commit() returns, the file is on disk (flushed before the
+// rename, so that a crash cannot leave an empty file under the final name).
+//
+// Errors: std::runtime_error naming the final path, what failed and the system's reason:
+//   "PATH: cannot create a temporary file beside it (REASON)"
+//   "PATH: write failed (REASON)", "PATH: cannot flush to disk (REASON)",
+//   "PATH: cannot close (REASON)", "PATH: cannot rename the temporary file into place (REASON)"
+// (REASON: std::generic_category().message(errno), e.g. "No such file or directory").
+// commit() before finish() is a programming error: std::logic_error.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace arrangements::detail {
+
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::string final_path);
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  ~AtomicFile();
+
+  void append(std::string_view bytes) {
+    buffer_.append(bytes);
+    if (buffer_.size() >= kBufferSize) flush();
+  }
+  void append(char c) {
+    buffer_.push_back(c);
+    if (buffer_.size() >= kBufferSize) flush();
+  }
+  void finish();
+  void commit();
+  const std::string& final_path() const { return final_; }
+
+ private:
+  static constexpr std::size_t kBufferSize = std::size_t{1} << 20;
+
+  void flush();
+  [[noreturn]] void fail(const char* what) const;
+
+  std::string final_, tmp_;
+  int fd_ = -1;
+  std::string buffer_;
+  bool committed_ = false;
+};
+
+}  // namespace arrangements::detail
