@@ -24,9 +24,9 @@ struct Side {
 template <class K>
 class NativePair {
  public:
-  NativePair(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+  NativePair(const K& kernel, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
              PairIntersection& out)
-      : k_(k), out_(out) {
+      : k_(kernel), out_(out) {
     for (int k = 0; k < 2; ++k) {
       const int t = k == 0 ? ta : tb;
       s_[k].tri = t;

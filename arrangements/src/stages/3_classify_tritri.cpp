@@ -22,10 +22,10 @@ bool classify_pair_tritri(const K& k, const std::vector<Vec3>& V, const std::vec
   out.coplanar = r.coplanar;
   using T = tritri::Type;
   using L = Location;
-  auto loc = [](Location::Kind k, int id) { return Location{k, static_cast<std::int8_t>(id)}; };
+  auto loc = [](Location::Kind kind, int id) { return Location{kind, static_cast<std::int8_t>(id)}; };
   auto next = [](int i) { return (i + 1) % 3; };
-  // Does edge e of triangle t lie in the plane of triangle o? Both predicates always run
-  // (two calls for every question, counted as such).
+  // Does edge e of triangle t lie in the plane of triangle o? Both orient3d always run (no
+  // short cut): the stage counts two orient3d per question, whatever the first one says.
   auto edge_in_plane = [&](const Tri& t, int e, const Tri& o) {
     const bool first = k.orient3d(V[o[0]], V[o[1]], V[o[2]], V[t[e]]) == tritri::Sign::Zero;
     const bool second = k.orient3d(V[o[0]], V[o[1]], V[o[2]], V[t[next(e)]]) == tritri::Sign::Zero;
