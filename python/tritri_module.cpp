@@ -13,7 +13,7 @@
 #include <arrangements/arrange_eigen.h>
 #include <arrangements/input_error.h>
 #include <arrangements/load_triangle_soup.h>
-#include <arrangements/stats_json.h>
+#include <arrangements/arrange_stats.h>
 #include <arrangements/thread_count.h>
 #include <tritri/classify.h>
 #include <tritri/double_kernel.h>
@@ -114,7 +114,7 @@ arrangements::Classifier classifier_named(const std::string& name) {
   throw std::invalid_argument("tritri.arrange: unknown classifier '" + name + "' (use 'tritri' or 'native')");
 }
 
-// The keys and values of `arrange --stats` (stats_json.h: one list for both).
+// The keys and values of `arrange --stats` (arrange_stats.h: one table for both).
 nb::dict stats_dict(const arrangements::ArrangeStats& s) {
   nb::dict d;
   arrangements::for_each_stat(s, [&d](const char* key, const auto& value, int) { d[key] = value; });
@@ -242,6 +242,8 @@ NB_MODULE(_tritri, m) {
   m.def("self_intersections", &self_intersections, nb::arg("V"), nb::arg("F"));
   m.def("intersections", &intersections, nb::arg("V1"), nb::arg("F1"), nb::arg("V2"), nb::arg("F2"));
   m.def("load_mesh", &load_mesh, nb::arg("path"));
+  // The stats keys with their meanings, as text (for the docstring of tritri.arrange).
+  m.def("_stats_key_list", &arrangements::stats_key_list, nb::arg("indent"), nb::arg("column"), nb::arg("width"));
   m.def("arrange", &arrange, nb::arg("V"), nb::arg("F"), nb::arg("labels").none(), nb::arg("classifier"),
         nb::arg("threads"));
 }

@@ -12,11 +12,13 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "arrangements/arrange.h"
-#include "arrangements/stats_json.h"
+#include "arrangements/arrange_stats.h"
 #include "arrangements/thread_count.h"
 #include "shared_meshes.h"
 #include "test_support.h"
@@ -175,8 +177,27 @@ TEST(ArrangeCli, ThreadCountsUpToTheCapRun) {
   EXPECT_NE(help.out.find("to " + std::to_string(arrangements::kMaxThreads)), std::string::npos) << help.out;
 }
 
-// The --stats JSON has exactly the keys of for_each_stat, in its order (the Python module's
-// stats dict is filled from the same list; tests/python/test_bindings.py compares the two).
+// The keys listed by `arrange --help` (one per line, after "JSON keys (--stats)").
+std::vector<std::string> help_keys() {
+  const Exit help = spawn(ARRANGE_BIN, {"--help"}, fs::temp_directory_path().string());
+  std::vector<std::string> keys;
+  std::istringstream in(help.out);
+  bool inside = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.starts_with("JSON keys (--stats)")) {
+      inside = true;
+    } else if (inside) {
+      if (line.empty()) break;
+      if (line.size() > 2 && line.starts_with("  ") && line[2] != ' ')
+        keys.push_back(line.substr(2, line.find(' ', 2) - 2));
+    }
+  }
+  return keys;
+}
+
+// The --stats JSON has exactly the keys of for_each_stat, in its order, and --help lists the
+// same keys in the same order, each with its meaning, within 90 columns (all three come
+// from kArrangeStats; tests/python/test_bindings.py compares them with the Python dict).
 TEST(ArrangeCli, StatsJsonKeysAreTheSharedList) {
   tritri_test::TempDir dir;
   const Exit e = spawn(ARRANGE_BIN, {two_triangles(dir.path()), "--stats"}, dir.path());
@@ -189,6 +210,49 @@ TEST(ArrangeCli, StatsJsonKeysAreTheSharedList) {
                               [&](const char* k, const auto&, int) { listed.push_back(k); });
   EXPECT_EQ(printed, listed) << e.out;
   EXPECT_EQ(listed.size(), 29u);
+  EXPECT_EQ(help_keys(), listed);
+  const std::string text = arrangements::stats_key_list(2, 26, 90);
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) EXPECT_LE(line.size(), 90u) << line;
+  for (const arrangements::StatKey& k : arrangements::kArrangeStatKeys) {
+    EXPECT_NE(std::string_view(k.meaning), "") << k.key;
+    EXPECT_NE(text.find(std::string("  ") + k.key + " "), std::string::npos) << k.key;
+  }
+}
+
+// The helpers through which the tool adds its own load and write times keep t_total_s the
+// sum of its parts.
+TEST(ArrangeStats, LoadAndWriteTimesAddToTheTotal) {
+  arrangements::ArrangeStats s;
+  s.t_output_s = 0.25;
+  s.t_total_s = 1;
+  arrangements::add_load_time(s, 0.5);
+  EXPECT_EQ(s.t_load_s, 0.5);
+  EXPECT_EQ(s.t_total_s, 1.5);
+  arrangements::add_write_time(s, 0.25);
+  EXPECT_EQ(s.t_output_s, 0.5);
+  EXPECT_EQ(s.t_total_s, 1.75);
+  EXPECT_GT(s.peak_rss_mb, 0);
+}
+
+// Long meanings wrap at the width and continue at the meaning's column; a key that reaches
+// the column puts its meaning on the next line.
+TEST(ArrangeStats, KeyListWrapsAtTheWidth) {
+  const std::string text = arrangements::stats_key_list(1, 8, 30);
+  std::istringstream lines(text);
+  std::size_t n = 0, keys = 0;
+  for (std::string line; std::getline(lines, line); ++n) {
+    EXPECT_TRUE(line.size() <= 30 || line.find(' ', 8) == std::string::npos) << line;
+    if (line[1] != ' ') {
+      ++keys;
+      EXPECT_EQ(line[0], ' ') << line;
+    } else {
+      EXPECT_EQ(line.find_first_not_of(' '), 8u) << line;
+    }
+  }
+  EXPECT_EQ(keys, arrangements::kArrangeStatKeys.size());
+  EXPECT_GT(n, keys);
+  EXPECT_NE(text.find(" intersection_points\n        distinct new"), std::string::npos) << text;
 }
 
 TEST(MakeTestMeshesCli, EveryHostileOptionValueIsAUsageError) {

@@ -124,4 +124,10 @@ ArrangeResult detail::arrange_validated(const TriangleSoup& input, const Arrange
   return run_pipeline(input, options, nullptr);
 }
 
+void add_write_time(ArrangeStats& s, double seconds) {
+  s.t_output_s += seconds;
+  s.t_total_s += seconds;
+  s.peak_rss_mb = peak_rss_mb();
+}
+
 }  // namespace arrangements

@@ -45,6 +45,7 @@ from ._tritri import classify as _classify
 from ._tritri import intersections as _intersections
 from ._tritri import load_mesh as _load_mesh
 from ._tritri import self_intersections as _self_intersections
+from ._tritri import _stats_key_list
 
 __all__ = ["Result", "ArgumentTypeError", "MAX_THREADS", "classify", "self_intersections", "intersections",
            "arrange", "load_mesh"]
@@ -224,9 +225,9 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0):
       label_sets  list of distinct tuples: the sorted labels of the input triangles
                   covering a face (face f: label_sets[label_set[f]])
       stats       dict of the pipeline's counts and stage times: exactly the keys and
-                  values of `arrange --stats` (in_vertices, ..., lpi, tpi, out_vertices,
-                  ..., threads, t_*_s, peak_rss_mb; see `arrange --help`); t_load_s is 0
-                  here, nothing is read from a file
+                  values of `arrange --stats`, in this order (t_load_s is 0 here, nothing
+                  is read from a file):
+{stats_keys}
     Raises ValueError for refused input (see the module's documentation): a threads value
     outside 0..MAX_THREADS, an unknown classifier, an index or label out of range, NaN or
     infinite coordinates, nothing left to arrange; ArgumentTypeError (also a ValueError)
@@ -252,6 +253,13 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0):
                              f"got {la.shape[0]}")
         la = _np.ascontiguousarray(la)
     return _arrange(_vertices(V, "V", f), Fa, la, classifier, threads)
+
+
+if arrange.__doc__:  # None under python -OO
+    # The key list comes from the one table of the statistics (arrangements/arrange_stats.h),
+    # indented like the lines around it (the placeholder at column 0 keeps Python >= 3.13
+    # from removing the docstring's common indentation).
+    arrange.__doc__ = arrange.__doc__.replace("{stats_keys}", _stats_key_list(18, 39, 94).rstrip("\n"))
 
 
 def load_mesh(path):

@@ -12,7 +12,8 @@
   table-driven over every argument of every function with hostile values (huge integers,
   NaN/Inf, wrong shapes and dtypes, out-of-range indices and labels, every kind of bad
   thread count), never OverflowError, MemoryError or a crash;
-- the stats dict has exactly the keys of `arrange --stats` (the CLI is run when built:
+- the stats dict has exactly the keys of `arrange --stats`, and `arrange --help` and the
+  docstring of tritri.arrange list them in the same order (the CLI is run when built:
   $TRITRI_ARRANGE_BIN, default build/bin/arrange).
 Run: scripts/test_python.sh (installs the package with pip, then runs pytest).
 """
@@ -535,5 +536,16 @@ def test_stats_keys_are_those_of_the_cli(tmp_path):
         if not key.startswith("t_") and key != "peak_rss_mb":
             assert from_python[key] == value, key
     assert from_python["t_load_s"] == 0
+    # `arrange --help` and the docstring of tritri.arrange list the same keys, in that order
+    # (all come from one table, arrangements/arrange_stats.h).
+    help_text = subprocess.run([cli, "--help"], capture_output=True, text=True, timeout=60).stdout
+    help_lines = help_text.split("JSON keys (--stats)", 1)[1].split("\n\n", 1)[0].splitlines()[1:]
+    from_help = [line.split()[0] for line in help_lines if line.startswith("  ") and line[2] != " "]
+    assert from_help == list(from_cli)
+    doc = tritri.arrange.__doc__
+    doc_lines = doc.split("is read from a file):", 1)[1].split("Raises", 1)[0].splitlines()[1:]
+    indent = min(len(line) - len(line.lstrip()) for line in doc_lines if line.strip())
+    from_doc = [line.split()[0] for line in doc_lines if line.strip() and len(line) - len(line.lstrip()) == indent]
+    assert from_doc == list(from_cli)
     over = subprocess.run([cli, str(mesh), "--threads", str(tritri.MAX_THREADS + 1)], capture_output=True, text=True)
     assert over.returncode == 2 and str(tritri.MAX_THREADS) in over.stderr

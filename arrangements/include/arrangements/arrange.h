@@ -14,7 +14,9 @@
 //                  orient3d / orient2d calls)
 // Output:  ArrangeResult: the output mesh (in the input's coordinates, also with scale:
 //          its points are rebuilt from the unscaled defining points, exactly) and the
-//          statistics (counts and stage times; arrange_stats.h lists them).
+//          statistics (counts and stage times; arrange_stats.h lists them). Of those,
+//          t_load_s (0 here) and writing the output are the caller's to add
+//          (add_load_time, add_write_time).
 // The stages themselves are internal (arrangements/src/stages/, in the order they run;
 // docs/ARCHITECTURE.md describes each one's contract).
 // A soup with no triangle left after preprocessing (all degenerate, or none at all) is
@@ -25,6 +27,7 @@
 #include <cstddef>
 #include <string>
 
+#include "arrangements/arrange_stats.h"
 #include "arrangements/output_mesh.h"
 #include "arrangements/triangle_soup.h"
 
@@ -39,23 +42,6 @@ struct ArrangeOptions {
   int threads = 0;
   bool scale = false;
   bool count_predicates = false;  // fill orient3d_calls / orient2d_calls (classification)
-};
-
-struct ArrangeStats {
-  std::size_t in_vertices = 0, in_triangles = 0;
-  std::size_t merged_vertices = 0, removed_degenerate = 0, removed_duplicate = 0;
-  std::size_t candidate_pairs = 0, intersecting_pairs = 0, coplanar_pairs = 0;
-  std::size_t intersection_points = 0;  // distinct new points of classification (LPIs)
-  std::size_t segments = 0, tri_segments = 0;
-  std::size_t tpi = 0;
-  std::size_t out_vertices = 0, out_edges = 0, out_triangles = 0;
-  long long euler = 0;
-  std::size_t orient3d_calls = 0, orient2d_calls = 0;  // in the classification stage
-  int threads = 0;
-  std::string classifier;
-  double t_load_s = 0, t_preprocess_s = 0, t_detect_s = 0, t_classify_s = 0, t_triangulate_s = 0,
-         t_output_s = 0, t_total_s = 0;
-  double peak_rss_mb = 0;
 };
 
 struct ArrangeResult {

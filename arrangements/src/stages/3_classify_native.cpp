@@ -1,8 +1,7 @@
 #include "stages/3_classify_native.h"
 
-#include <tritri/double_predicates.h>
-
-#include "support/predicate_counts.h"
+#include <tritri/counting_kernel.h>
+#include <tritri/double_kernel.h>
 
 namespace arrangements {
 namespace {
@@ -11,15 +10,6 @@ using tritri::Plane;
 
 int next(int i) { return i == 2 ? 0 : i + 1; }
 int prev(int i) { return i == 0 ? 2 : i - 1; }
-
-int o3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  if (auto* n = classification_counts()) ++n->orient3d;
-  return tritri::to_int(tritri::orient3d(a, b, c, d));
-}
-int o2d(const Vec3& a, const Vec3& b, const Vec3& c, Plane p) {
-  if (auto* n = classification_counts()) ++n->orient2d;
-  return tritri::to_int(tritri::orient2d(a, b, c, p));
-}
 
 // One triangle of the pair.
 struct Side {
@@ -30,10 +20,13 @@ struct Side {
   int orientation = 0;      // its orientation there (0 until computed)
 };
 
+// Every predicate goes through the kernel K (whose Point is Vec3).
+template <class K>
 class NativePair {
  public:
-  NativePair(const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb, PairIntersection& out)
-      : out_(out) {
+  NativePair(const K& kernel, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+             PairIntersection& out)
+      : k_(kernel), out_(out) {
     for (int k = 0; k < 2; ++k) {
       const int t = k == 0 ? ta : tb;
       s_[k].tri = t;
@@ -235,15 +228,29 @@ class NativePair {
     out_.points.push_back(p);
   }
 
+  int o3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) const {
+    return tritri::to_int(k_.orient3d(a, b, c, d));
+  }
+  int o2d(const Vec3& a, const Vec3& b, const Vec3& c, Plane p) const {
+    return tritri::to_int(k_.orient2d(a, b, c, p));
+  }
+
+  K k_;
   Side s_[2];
   PairIntersection& out_;
 };
 
 }  // namespace
 
-bool classify_pair_native(const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+template <class K>
+bool classify_pair_native(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
                           PairIntersection& out) {
-  return NativePair(V, F, ta, tb, out).run();
+  return NativePair<K>(k, V, F, ta, tb, out).run();
 }
+
+template bool classify_pair_native(const tritri::DoubleKernel&, const std::vector<Vec3>&, const std::vector<Tri>&,
+                                   int, int, PairIntersection&);
+template bool classify_pair_native(const tritri::CountingKernel<tritri::DoubleKernel>&, const std::vector<Vec3>&,
+                                   const std::vector<Tri>&, int, int, PairIntersection&);
 
 }  // namespace arrangements

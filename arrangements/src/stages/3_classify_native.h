@@ -9,23 +9,39 @@
 // edges at the lonely vertex may cross A. Then the same for A against B, stopping as soon
 // as two distinct points are known (non-coplanar pairs have at most two).
 //
-// Inputs:  V vertices, F triangles (no degenerate triangles, vertices merged exactly),
-//          ta, tb the pair.
+// Inputs:  k the predicates: tritri::DoubleKernel, or tritri::CountingKernel over it to
+//          count the calls (the two instantiations; classify_pairs picks one); without k,
+//          DoubleKernel. V vertices, F triangles (no degenerate triangles, vertices merged
+//          exactly), ta, tb the pair.
 // Output:  out, filled when the triangles intersect beyond what they share in the mesh
 //          (a common vertex or edge alone is not an intersection); returns whether so.
-// Exactness: every decision is an exact double predicate (tritri::orient3d / orient2d);
+// Exactness: every decision is an exact double predicate (k.orient3d / k.orient2d);
 //          new points are described by vertex ids, never constructed.
 // Cost: O(1), at most a few dozen predicates.
 #pragma once
 
 #include <vector>
 
+#include <tritri/counting_kernel.h>
+#include <tritri/double_kernel.h>
+
 #include "stages/3_pair_intersection.h"
 #include "arrangements/triangle_soup.h"
 
 namespace arrangements {
 
-bool classify_pair_native(const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+template <class K>
+bool classify_pair_native(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
                           PairIntersection& out);
+extern template bool classify_pair_native(const tritri::DoubleKernel&, const std::vector<Vec3>&,
+                                          const std::vector<Tri>&, int, int, PairIntersection&);
+extern template bool classify_pair_native(const tritri::CountingKernel<tritri::DoubleKernel>&,
+                                          const std::vector<Vec3>&, const std::vector<Tri>&, int, int,
+                                          PairIntersection&);
+
+inline bool classify_pair_native(const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+                                 PairIntersection& out) {
+  return classify_pair_native(tritri::DoubleKernel{}, V, F, ta, tb, out);
+}
 
 }  // namespace arrangements

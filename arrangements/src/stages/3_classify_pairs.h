@@ -10,7 +10,11 @@
 // Neighbours first: a pair that shares a vertex or an edge (by index; V is merged) and
 // provably meets only there (tritri::meet_only_in_shared, 1 to 4 exact orient3d) is
 // dropped without classification, as the classifier would drop it; most candidate pairs
-// of a mesh are such neighbours. With `counts`, their orient3d calls are counted too.
+// of a mesh are such neighbours.
+// counts: null (the default) runs every predicate on tritri::DoubleKernel, nothing
+// counted; otherwise every predicate of this stage (neighbour tests and classifiers) runs
+// through a tritri::CountingKernel over it, one PredicateCounts per chunk of pairs, and
+// their sums are added to *counts.
 // Cost: O(#pairs) classifications, parallel.
 #pragma once
 

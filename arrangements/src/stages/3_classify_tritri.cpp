@@ -4,19 +4,14 @@
 #include <tritri/counting_kernel.h>
 #include <tritri/double_kernel.h>
 
-#include "support/predicate_counts.h"
-
 namespace arrangements {
 
-bool classify_pair_tritri(const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+template <class K>
+bool classify_pair_tritri(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
                           PairIntersection& out) {
   const Tri& a = F[ta];
   const Tri& b = F[tb];
-  tritri::PredicateCounts* counts = classification_counts();
-  const tritri::Result r =
-      counts ? tritri::classify(tritri::CountingKernel<tritri::DoubleKernel>(*counts), V[a[0]], V[a[1]], V[a[2]], V[b[0]],
-                                V[b[1]], V[b[2]])
-             : tritri::classify<tritri::DoubleKernel>(V[a[0]], V[a[1]], V[a[2]], V[b[0]], V[b[1]], V[b[2]]);
+  const tritri::Result r = tritri::classify(k, V[a[0]], V[a[1]], V[a[2]], V[b[0]], V[b[1]], V[b[2]]);
   bool only_shared = true;
   for (const auto& p : r.points) only_shared &= p.type == tritri::Type::VA_ON_VB;
   if (!r.intersects() || only_shared) return false;
@@ -27,13 +22,14 @@ bool classify_pair_tritri(const std::vector<Vec3>& V, const std::vector<Tri>& F,
   out.coplanar = r.coplanar;
   using T = tritri::Type;
   using L = Location;
-  auto loc = [](Location::Kind k, int id) { return Location{k, static_cast<std::int8_t>(id)}; };
+  auto loc = [](Location::Kind kind, int id) { return Location{kind, static_cast<std::int8_t>(id)}; };
   auto next = [](int i) { return (i + 1) % 3; };
-  // Does edge e of triangle t lie in the plane of triangle o?
+  // Does edge e of triangle t lie in the plane of triangle o? Both orient3d always run (no
+  // short cut): the stage counts two orient3d per question, whatever the first one says.
   auto edge_in_plane = [&](const Tri& t, int e, const Tri& o) {
-    if (counts) counts->orient3d += 2;
-    return tritri::orient3d(V[o[0]], V[o[1]], V[o[2]], V[t[e]]) == tritri::Sign::Zero &&
-           tritri::orient3d(V[o[0]], V[o[1]], V[o[2]], V[t[next(e)]]) == tritri::Sign::Zero;
+    const bool first = k.orient3d(V[o[0]], V[o[1]], V[o[2]], V[t[e]]) == tritri::Sign::Zero;
+    const bool second = k.orient3d(V[o[0]], V[o[1]], V[o[2]], V[t[next(e)]]) == tritri::Sign::Zero;
+    return first && second;
   };
   for (const auto& p : r.points) {
     PairPoint q;
@@ -70,5 +66,10 @@ bool classify_pair_tritri(const std::vector<Vec3>& V, const std::vector<Tri>& F,
   for (const auto& s : r.segments) out.segments.push_back(s);
   return true;
 }
+
+template bool classify_pair_tritri(const tritri::DoubleKernel&, const std::vector<Vec3>&, const std::vector<Tri>&,
+                                   int, int, PairIntersection&);
+template bool classify_pair_tritri(const tritri::CountingKernel<tritri::DoubleKernel>&, const std::vector<Vec3>&,
+                                   const std::vector<Tri>&, int, int, PairIntersection&);
 
 }  // namespace arrangements

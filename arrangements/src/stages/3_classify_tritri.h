@@ -13,17 +13,32 @@
 //                                tool builds an undefined point here).
 // A pair whose only contact is shared mesh vertices (all points VA_ON_VB) is dropped.
 //
-// Inputs, output, exactness and cost: as classify_pair_native.
+// Inputs, output, exactness and cost: as classify_pair_native (the same kernel k, the same
+// two instantiations): k serves tritri::classify and the adapter's own orient3d calls.
 #pragma once
 
 #include <vector>
+
+#include <tritri/counting_kernel.h>
+#include <tritri/double_kernel.h>
 
 #include "stages/3_pair_intersection.h"
 #include "arrangements/triangle_soup.h"
 
 namespace arrangements {
 
-bool classify_pair_tritri(const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+template <class K>
+bool classify_pair_tritri(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
                           PairIntersection& out);
+extern template bool classify_pair_tritri(const tritri::DoubleKernel&, const std::vector<Vec3>&,
+                                          const std::vector<Tri>&, int, int, PairIntersection&);
+extern template bool classify_pair_tritri(const tritri::CountingKernel<tritri::DoubleKernel>&,
+                                          const std::vector<Vec3>&, const std::vector<Tri>&, int, int,
+                                          PairIntersection&);
+
+inline bool classify_pair_tritri(const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+                                 PairIntersection& out) {
+  return classify_pair_tritri(tritri::DoubleKernel{}, V, F, ta, tb, out);
+}
 
 }  // namespace arrangements
