@@ -55,7 +55,7 @@ std::string str(const Exact& e) {
   return os.str();
 }
 std::string str(const Location& l) {
-  const char* k[] = {"Vertex", "Edge", "Interior"};
+  const char* k[] = {"Outside", "Interior", "Edge", "Vertex"};
   return std::string(k[l.kind]) + "(" + std::to_string(l.id) + ")";
 }
 

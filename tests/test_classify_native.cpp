@@ -73,10 +73,7 @@ int vertex_id(std::vector<Vec3>& V, const Vec3& p) {
 }
 
 bool degenerate(const Vec3& a, const Vec3& b, const Vec3& c) {
-  using tritri::Plane;
-  return tritri::orient2d(a, b, c, Plane::XY) == tritri::Sign::Zero &&
-         tritri::orient2d(a, b, c, Plane::YZ) == tritri::Sign::Zero &&
-         tritri::orient2d(a, b, c, Plane::ZX) == tritri::Sign::Zero;
+  return tritri::projection(tritri::DoubleKernel{}, a, b, c).second == 0;
 }
 
 void check_pair(const Vec3 (&p)[6], long& compared, long& intersecting) {

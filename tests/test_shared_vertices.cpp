@@ -67,9 +67,7 @@ Pair make_pair(std::mt19937_64& rng, int shared, int style, int k, double offset
 }
 
 bool degenerate(const std::array<P, 3>& t) {
-  for (tritri::Plane p : {tritri::Plane::XY, tritri::Plane::YZ, tritri::Plane::ZX})
-    if (tritri::orient2d(t[0], t[1], t[2], p) != tritri::Sign::Zero) return false;
-  return true;
+  return tritri::projection(tritri::DoubleKernel{}, t[0], t[1], t[2]).second == 0;
 }
 
 // Does the full classification report exactly the shared vertices?

@@ -13,6 +13,7 @@
 
 #include <tritri/classify.h>
 #include <tritri/implicit_kernel.h>
+#include <tritri/projection.h>
 
 namespace arrangements {
 namespace {
@@ -79,11 +80,7 @@ ArrangementCheck check_arrangement(const OutputMesh& mesh, std::size_t max_repor
   tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
     const Tri& f = F[t];
     bool degenerate = f[0] == f[1] || f[1] == f[2] || f[0] == f[2];
-    if (!degenerate) {
-      degenerate = true;
-      for (tritri::Plane pl : {tritri::Plane::XY, tritri::Plane::YZ, tritri::Plane::ZX})
-        degenerate &= tritri::orient2d(P[f[0]], P[f[1]], P[f[2]], pl) == tritri::Sign::Zero;
-    }
+    if (!degenerate) degenerate = tritri::projection(tritri::ImplicitKernel{}, P[f[0]], P[f[1]], P[f[2]]).second == 0;
     if (degenerate) report(out.degenerate_triangles, "triangle " + std::to_string(t) + " is degenerate");
   });
   tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {

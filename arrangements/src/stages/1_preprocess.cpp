@@ -13,7 +13,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include <tritri/double_predicates.h>
+#include <tritri/double_kernel.h>
+#include <tritri/projection.h>
 
 namespace arrangements {
 namespace {
@@ -49,11 +50,9 @@ struct CornerSetHash {
 // -0.0 + 0.0 == +0.0, so equal coordinates get equal bits (hash and output).
 Vec3 without_negative_zero(const Vec3& p) { return {p[0] + 0.0, p[1] + 0.0, p[2] + 0.0}; }
 
+// Collinear iff degenerate in all three axis projections (tritri::projection's test).
 bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
-  using tritri::Plane;
-  using tritri::Sign;
-  return tritri::orient2d(a, b, c, Plane::XY) == Sign::Zero && tritri::orient2d(a, b, c, Plane::YZ) == Sign::Zero &&
-         tritri::orient2d(a, b, c, Plane::ZX) == Sign::Zero;
+  return tritri::projection(tritri::DoubleKernel{}, a, b, c).second == 0;
 }
 
 // Sorted, without repeats.

@@ -2,6 +2,10 @@
 
 #include <tritri/counting_kernel.h>
 #include <tritri/double_kernel.h>
+#include <tritri/location.h>
+#include <tritri/projection.h>
+
+#include <tuple>
 
 namespace arrangements {
 namespace {
@@ -89,38 +93,26 @@ class NativePair {
 
   Side& ensure_projection(int k) {
     Side& t = s_[k];
-    if (t.orientation == 0)
-      for (Plane p : {Plane::XY, Plane::YZ, Plane::ZX}) {
-        t.orientation = o2d(*t.v[0], *t.v[1], *t.v[2], p);
-        if (t.orientation != 0) {
-          t.plane = p;
-          break;
-        }
-      }
+    if (t.orientation == 0) std::tie(t.plane, t.orientation) = tritri::projection(k_, *t.v[0], *t.v[1], *t.v[2]);
     return t;
   }
 
-  // Where a point of triangle o's plane lies in the closed triangle o; false if outside.
-  bool locate_in_triangle(int o, const Vec3& p, Location& loc) {
+  // Where a point of triangle o's plane lies in the closed triangle o (Outside: not in it).
+  Location locate_in_triangle(int o, const Vec3& p) {
     const Side& t = ensure_projection(o);
-    int zero_edges = 0, first_zero = -1, second_zero = -1;
+    int s[3];
     for (int i = 0; i < 3; ++i) {
-      const int s = o2d(*t.v[i], *t.v[next(i)], p, t.plane) * t.orientation;
-      if (s < 0) return false;
-      if (s == 0) (zero_edges++ == 0 ? first_zero : second_zero) = i;
+      s[i] = o2d(*t.v[i], *t.v[next(i)], p, t.plane) * t.orientation;
+      if (s[i] < 0) return Location::outside();
     }
-    if (zero_edges == 0) loc = {Location::Interior, -1};
-    else if (zero_edges == 1) loc = {Location::Edge, static_cast<std::int8_t>(first_zero)};
-    else  // on the lines of two edges: their common vertex
-      loc = {Location::Vertex, static_cast<std::int8_t>(next(first_zero) == second_zero ? second_zero : first_zero)};
-    return true;
+    return tritri::location_from_edge_signs(s);
   }
 
   // Vertex v of side k lies in the other plane: is it in the other triangle?
   void vertex_in_plane(int k, int v) {
     if (done()) return;
-    Location loc;
-    if (locate_in_triangle(1 - k, *s_[k].v[v], loc)) add(k, {Location::Vertex, static_cast<std::int8_t>(v)}, loc);
+    const Location loc = locate_in_triangle(1 - k, *s_[k].v[v]);
+    if (loc.kind != Location::Outside) add(k, Location::vertex(v), loc);
   }
 
   // Edge e of side k has its endpoints strictly on both sides of the other plane: where
@@ -137,13 +129,8 @@ class NativePair {
         if (sign[i] != ref) return;
       }
     }
-    const Location on_edge{Location::Edge, static_cast<std::int8_t>(e)};
-    int zero_edges = 0, z[2] = {-1, -1};
-    for (int i = 0; i < 3; ++i)
-      if (sign[i] == 0) z[zero_edges++] = i;
-    if (zero_edges == 0) add(k, on_edge, {Location::Interior, -1});
-    else if (zero_edges == 1) add(k, on_edge, {Location::Edge, static_cast<std::int8_t>(z[0])});
-    else add(k, on_edge, {Location::Vertex, static_cast<std::int8_t>(next(z[0]) == z[1] ? z[1] : z[0])});
+    for (int& x : sign) x *= ref;  // +1: the side of each edge line where the other triangle is
+    add(k, Location::edge(e), tritri::location_from_edge_signs(sign));
   }
 
   // Edge e of side k lies in the other triangle's plane: crossings with the other's edges
@@ -158,7 +145,7 @@ class NativePair {
     for (int i = 0; i < 3 && !done(); ++i) {
       // The other's vertex i strictly inside segment pq.
       if (side_of_other[i] == 0 && strictly_between(p, q, *other.v[i], other.plane))
-        add(k, {Location::Edge, static_cast<std::int8_t>(e)}, {Location::Vertex, static_cast<std::int8_t>(i)});
+        add(k, Location::edge(e), Location::vertex(i));
     }
     for (int i = 0; i < 3 && !done(); ++i) {
       // Proper crossing of pq with the other's edge i.
@@ -166,8 +153,7 @@ class NativePair {
       const int sp = o2d(*other.v[i], *other.v[next(i)], p, other.plane);
       const int sq = o2d(*other.v[i], *other.v[next(i)], q, other.plane);
       if (sp * sq < 0)
-        add(k, {Location::Edge, static_cast<std::int8_t>(e)}, {Location::Edge, static_cast<std::int8_t>(i)},
-            /*self_edge_in_other_plane=*/true);
+        add(k, Location::edge(e), Location::edge(i), /*self_edge_in_other_plane=*/true);
     }
   }
 
@@ -188,9 +174,8 @@ class NativePair {
     for (int v = 0; v < 3; ++v) vertex_in_plane(1, v);
     for (int e = 0; e < 3; ++e) segment_in_plane(1, e);
     for (int v = 0; v < 3; ++v) {  // A's vertices inside B (on B's boundary: found above)
-      Location loc;
-      if (locate_in_triangle(1, *s_[0].v[v], loc) && loc.kind == Location::Interior)
-        add(0, {Location::Vertex, static_cast<std::int8_t>(v)}, loc);
+      const Location loc = locate_in_triangle(1, *s_[0].v[v]);
+      if (loc.kind == Location::Interior) add(0, Location::vertex(v), loc);
     }
     // Segments: two corners of the overlap on a common closed edge of A or of B.
     const auto& pts = out_.points;

@@ -14,25 +14,15 @@
 #include <array>
 #include <cstdint>
 
+#include <tritri/location.h>
 #include <tritri/result.h>
 
 namespace arrangements {
 
-// Where a point lies in one triangle of the pair (local numbering: vertex k, edge k from
-// vertex k to vertex (k+1)%3).
-struct Location {
-  enum Kind : std::int8_t { Vertex, Edge, Interior } kind = Interior;
-  std::int8_t id = -1;  // local vertex or edge, -1 for Interior
-  friend bool operator==(const Location&, const Location&) = default;
-};
-
-// The closed edges of a triangle that a location lies on, as a bit mask (a vertex lies on
-// its two edges). Two points share a closed edge iff their masks intersect.
-inline int closed_edges(const Location& l) {
-  if (l.kind == Location::Vertex) return (1 << l.id) | (1 << (l.id + 2) % 3);
-  if (l.kind == Location::Edge) return 1 << l.id;
-  return 0;
-}
+// Where a point lies in one triangle of the pair: tritri's Location (vertex k, edge k from
+// vertex k to vertex (k+1)%3, Interior; never Outside in a record), with closed_edges.
+using tritri::Location;
+using tritri::closed_edges;
 
 // An LPI by vertex ids: line (p, q), plane (r, s, t). Canonical form: p < q, r < s < t.
 struct LpiKey {

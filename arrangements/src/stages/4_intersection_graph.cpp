@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <numeric>
 
+#include <tritri/double_kernel.h>
 #include <tritri/implicit_predicates.h>
+#include <tritri/location.h>
+#include <tritri/projection.h>
 
 #include "support/auxiliary_point.h"
 
@@ -82,24 +85,21 @@ SegmentSupport segment_support(const std::vector<Tri>& F, const PairIntersection
   return sup;
 }
 
-// Where point x (in t's plane) lies in closed triangle t: -2 outside, -1 inside,
-// 0..2 on that open edge, 3..5 at vertex (k - 3).
-int locate(const std::vector<tritri::ImplicitPoint>& P, const Tri& t, tritri::Plane plane, int orientation,
-           int x) {
+// Where point x (in t's plane) lies in closed triangle t, which has orientation
+// `orientation` != 0 in `plane`. A vertex of t is recognised by its id; a point at a
+// vertex's position with another id cannot occur (points are deduplicated) and is
+// reported Outside.
+Location locate(const std::vector<tritri::ImplicitPoint>& P, const Tri& t, tritri::Plane plane, int orientation,
+                int x) {
   for (int k = 0; k < 3; ++k)
-    if (t[k] == x) return 3 + k;
-  int zeros = 0, edge = -1;
+    if (t[k] == x) return Location::vertex(k);
+  int s[3];
   for (int k = 0; k < 3; ++k) {
-    const int s = tritri::to_int(tritri::orient2d(P[t[k]], P[t[(k + 1) % 3]], P[x], plane)) * orientation;
-    if (s < 0) return -2;
-    if (s == 0) {
-      ++zeros;
-      edge = k;
-    }
+    s[k] = tritri::to_int(tritri::orient2d(P[t[k]], P[t[(k + 1) % 3]], P[x], plane)) * orientation;
+    if (s[k] < 0) return Location::outside();
   }
-  if (zeros == 0) return -1;
-  if (zeros == 1) return edge;
-  return -2;  // on two edge lines: a vertex, but vertices were matched by id above
+  const Location l = tritri::location_from_edge_signs(s);
+  return l.kind == Location::Vertex ? Location::outside() : l;
 }
 
 struct Additions {
@@ -124,29 +124,24 @@ void share_coplanar(const std::vector<Vec3>& V, const std::vector<Tri>& F, Inter
   tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
     if (g.coplanar_partners[t].empty()) return;
     const Tri& tri = F[t];
-    tritri::Plane plane = tritri::Plane::XY;
-    int orientation = 0;
-    for (tritri::Plane p : {tritri::Plane::XY, tritri::Plane::YZ, tritri::Plane::ZX}) {
-      orientation = tritri::to_int(tritri::orient2d(V[tri[0]], V[tri[1]], V[tri[2]], p));
-      if (orientation != 0) {
-        plane = p;
-        break;
-      }
-    }
+    // (Named variables, not a structured binding: the lambda below captures them.)
+    const std::pair<tritri::Plane, int> proj =
+        tritri::projection(tritri::DoubleKernel{}, V[tri[0]], V[tri[1]], V[tri[2]]);
+    const tritri::Plane plane = proj.first;
+    const int orientation = proj.second;
     Additions& a = add[t];
     auto place = [&](int x) {
-      const int where = locate(g.points, tri, plane, orientation, x);
-      if (where == -1) a.inside.push_back(x);
-      else if (where >= 0 && where <= 2) a.on_edge.push_back({g.triangle_edges[t][where], x});
-      return where != -2;
+      const Location where = locate(g.points, tri, plane, orientation, x);
+      if (where.kind == Location::Interior) a.inside.push_back(x);
+      else if (where.kind == Location::Edge) a.on_edge.push_back({g.triangle_edges[t][where.id], x});
     };
     for (int u : g.coplanar_partners[t]) {
       for (int x : g.triangle_points[u]) place(x);
       for (int k = 0; k < 3; ++k)
         for (int x : g.edge_points[g.triangle_edges[u][k]]) place(x);
       for (const auto& s : g.triangle_segments[u])
-        if (locate(g.points, tri, plane, orientation, s[0]) != -2 &&
-            locate(g.points, tri, plane, orientation, s[1]) != -2)
+        if (locate(g.points, tri, plane, orientation, s[0]).kind != Location::Outside &&
+            locate(g.points, tri, plane, orientation, s[1]).kind != Location::Outside)
           a.segments.push_back(s);
     }
   });

@@ -6,8 +6,10 @@
 #include <stdexcept>
 #include <string>
 
+#include <tritri/double_kernel.h>
 #include <tritri/double_predicates.h>
 #include <tritri/implicit_predicates.h>
+#include <tritri/projection.h>
 
 #include "support/auxiliary_point.h"
 
@@ -331,24 +333,14 @@ class LocalTriangulation {
   }
 };
 
-// The projection where triangle t is not degenerate, and t's orientation there.
+// The projection where triangle t is not degenerate, and t's orientation there: the
+// dominant plane first (the best conditioned, so the filters decide most predicates),
+// checked exactly, then the others in tritri's cyclic order.
 std::pair<tritri::Plane, int> projection(const std::vector<Vec3>& V, const Tri& t) {
-  // The dominant projection (largest component of the rounded normal: the best
-  // conditioned, so the filters decide most predicates), checked exactly; the other
-  // projections if rounding picked one where the triangle is degenerate.
   const Vec3 &a = V[t[0]], &b = V[t[1]], &c = V[t[2]];
-  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
-  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-  const double n[3] = {std::fabs(uy * vz - uz * vy), std::fabs(uz * vx - ux * vz), std::fabs(ux * vy - uy * vx)};
-  // Plane XY drops z, YZ drops x, ZX drops y.
-  const tritri::Plane by_axis[3] = {tritri::Plane::YZ, tritri::Plane::ZX, tritri::Plane::XY};
-  const int dominant = n[0] >= n[1] ? (n[0] >= n[2] ? 0 : 2) : (n[1] >= n[2] ? 1 : 2);
-  for (int k = 0; k < 3; ++k) {
-    const tritri::Plane p = by_axis[(dominant + k) % 3];
-    const int o = tritri::to_int(tritri::orient2d(a, b, c, p));
-    if (o != 0) return {p, o};
-  }
-  throw std::logic_error("triangulate: degenerate triangle");
+  const auto proj = tritri::projection(tritri::DoubleKernel{}, a, b, c, tritri::dominant_plane(a, b, c));
+  if (proj.second == 0) throw std::logic_error("triangulate: degenerate triangle");
+  return proj;
 }
 
 }  // namespace

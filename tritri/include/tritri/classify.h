@@ -32,6 +32,8 @@
 #include <utility>
 
 #include "tritri/kernel_concept.h"
+#include "tritri/location.h"
+#include "tritri/projection.h"
 #include "tritri/result.h"
 #include "tritri/sign.h"
 
@@ -47,39 +49,10 @@ inline bool strictly_one_side(const int (&s)[3]) noexcept {
 }
 inline bool all_zero(const int (&s)[3]) noexcept { return s[0] == 0 && s[1] == 0 && s[2] == 0; }
 
-// Where a point of a triangle's plane lies in the closed triangle.
-struct Location {
-  enum Kind : signed char { Outside, Face, Edge, Vertex } kind = Outside;
-  int id = -1;
-};
-
-// Location from the three signs of a point against the edge lines of a triangle,
-// normalised so that +1 is the triangle's side. Zero on edge j's line only: open edge j;
-// zero on the lines of edges j and j+1: their common vertex j+1.
-inline Location location_from_edge_signs(const int (&s)[3]) noexcept {
-  if (s[0] < 0 || s[1] < 0 || s[2] < 0) return {};
-  const int zeros = (s[0] == 0) + (s[1] == 0) + (s[2] == 0);
-  if (zeros == 0) return {Location::Face, -1};
-  if (zeros == 1) return {Location::Edge, s[0] == 0 ? 0 : (s[1] == 0 ? 1 : 2)};
-  const int nonzero = s[0] != 0 ? 0 : (s[1] != 0 ? 1 : 2);
-  return {Location::Vertex, prev(nonzero)};  // edges next(nz) and prev(nz) meet at prev(nz)
-}
-
-// The first axis plane in which the triangle's projection is non-degenerate, and the
-// orientation there; Zero orientation means the triangle itself is degenerate.
-template <class K, class P>
-std::pair<Plane, int> projection(const K& k, const P& t0, const P& t1, const P& t2) {
-  for (Plane p : {Plane::XY, Plane::YZ, Plane::ZX}) {
-    const int s = to_int(k.orient2d(t0, t1, t2, p));
-    if (s != 0) return {p, s};
-  }
-  return {Plane::XY, 0};
-}
-
 // A point's closed edges of A and of B as bit masks, for the coplanar segment rule.
 inline void edge_masks(const IntersectionPoint& p, int& ma, int& mb) noexcept {
   const int i = p.id0, j = p.id1;
-  auto vertex_edges = [](int v) { return (1 << v) | (1 << prev(v)); };
+  auto vertex_edges = [](int v) { return closed_edges(Location::vertex(v)); };
   switch (p.type) {
     case Type::VA_ON_VB: ma = vertex_edges(i); mb = vertex_edges(j); break;
     case Type::VA_ON_EB: ma = vertex_edges(i); mb = 1 << j; break;
@@ -199,13 +172,13 @@ class Classifier {
   // with orient2d in a projection where `other` is non-degenerate.
   Location locate_vertex(const P* const (&self)[3], int v, const P* const (&other)[3],
                          std::pair<Plane, int>& proj) const {
-    if (proj.second == 0) proj = projection(k_, *other[0], *other[1], *other[2]);
+    if (proj.second == 0) proj = tritri::projection(k_, *other[0], *other[1], *other[2]);
     int s[3];
     for (int j = 0; j < 3; ++j) {
       s[j] = proj.second * to_int(k_.orient2d(*other[j], *other[next(j)], *self[v], proj.first));
       if (s[j] < 0) return {};
     }
-    return location_from_edge_signs(s);
+    return tritri::location_from_edge_signs(s);
   }
 
   // Location in `other` of the point where edge e of `self` crosses other's plane: the
@@ -222,7 +195,7 @@ class Classifier {
       }
     }
     for (int& x : s) x *= ref;
-    return location_from_edge_signs(s);
+    return tritri::location_from_edge_signs(s);
   }
 
   void crossing_with_vertices_in_planes() {
@@ -237,33 +210,33 @@ class Classifier {
       const Location loc = f.is_vertex ? locate_vertex(a_, f.id, b_, proj_b) : locate_crossing(a_, f.id, b_);
       if (loc.kind == Location::Outside) continue;
       if (f.is_vertex)
-        add_unique(loc.kind == Location::Face   ? IntersectionPoint{Type::VA_ON_TB, int8(f.id), -1}
-                   : loc.kind == Location::Edge ? IntersectionPoint{Type::VA_ON_EB, int8(f.id), int8(loc.id)}
-                                                : IntersectionPoint{Type::VA_ON_VB, int8(f.id), int8(loc.id)});
+        add_unique(loc.kind == Location::Interior ? IntersectionPoint{Type::VA_ON_TB, int8(f.id), -1}
+                   : loc.kind == Location::Edge   ? IntersectionPoint{Type::VA_ON_EB, int8(f.id), int8(loc.id)}
+                                                  : IntersectionPoint{Type::VA_ON_VB, int8(f.id), int8(loc.id)});
       else
-        add_unique(loc.kind == Location::Face   ? IntersectionPoint{Type::EA_CROSS_TB, int8(f.id), -1}
-                   : loc.kind == Location::Edge ? IntersectionPoint{Type::EA_CROSS_EB, int8(f.id), int8(loc.id)}
-                                                : IntersectionPoint{Type::VB_ON_EA, int8(loc.id), int8(f.id)});
+        add_unique(loc.kind == Location::Interior ? IntersectionPoint{Type::EA_CROSS_TB, int8(f.id), -1}
+                   : loc.kind == Location::Edge   ? IntersectionPoint{Type::EA_CROSS_EB, int8(f.id), int8(loc.id)}
+                                                  : IntersectionPoint{Type::VB_ON_EA, int8(loc.id), int8(f.id)});
     }
     for (int n = 0; n < nb && r_.points.size() < max_points; ++n) {
       const Feature f = fb[n];
       const Location loc = f.is_vertex ? locate_vertex(b_, f.id, a_, proj_a) : locate_crossing(b_, f.id, a_);
       if (loc.kind == Location::Outside) continue;
       if (f.is_vertex)
-        add_unique(loc.kind == Location::Face   ? IntersectionPoint{Type::VB_ON_TA, int8(f.id), -1}
-                   : loc.kind == Location::Edge ? IntersectionPoint{Type::VB_ON_EA, int8(f.id), int8(loc.id)}
-                                                : IntersectionPoint{Type::VA_ON_VB, int8(loc.id), int8(f.id)});
+        add_unique(loc.kind == Location::Interior ? IntersectionPoint{Type::VB_ON_TA, int8(f.id), -1}
+                   : loc.kind == Location::Edge   ? IntersectionPoint{Type::VB_ON_EA, int8(f.id), int8(loc.id)}
+                                                  : IntersectionPoint{Type::VA_ON_VB, int8(loc.id), int8(f.id)});
       else
-        add_unique(loc.kind == Location::Face   ? IntersectionPoint{Type::EB_CROSS_TA, int8(f.id), -1}
-                   : loc.kind == Location::Edge ? IntersectionPoint{Type::EA_CROSS_EB, int8(loc.id), int8(f.id)}
-                                                : IntersectionPoint{Type::VA_ON_EB, int8(loc.id), int8(f.id)});
+        add_unique(loc.kind == Location::Interior ? IntersectionPoint{Type::EB_CROSS_TA, int8(f.id), -1}
+                   : loc.kind == Location::Edge   ? IntersectionPoint{Type::EA_CROSS_EB, int8(loc.id), int8(f.id)}
+                                                  : IntersectionPoint{Type::VA_ON_EB, int8(loc.id), int8(f.id)});
     }
   }
 
   // --- coplanar -------------------------------------------------------------------------
 
   void coplanar() {
-    const auto [plane, sa] = projection(k_, *a_[0], *a_[1], *a_[2]);
+    const auto [plane, sa] = tritri::projection(k_, *a_[0], *a_[1], *a_[2]);
     if (sa == 0) { r_.degenerate = true; return; }
     const int sb = to_int(k_.orient2d(*b_[0], *b_[1], *b_[2], plane));
     if (sb == 0) { r_.degenerate = true; return; }
@@ -286,14 +259,14 @@ class Classifier {
     for (int i = 0; i < 3; ++i) {
       const int s[3] = {side_a[0][i], side_a[1][i], side_a[2][i]};
       const Location loc = location_from_edge_signs(s);
-      if (loc.kind == Location::Face) add({Type::VA_ON_TB, int8(i), -1});
+      if (loc.kind == Location::Interior) add({Type::VA_ON_TB, int8(i), -1});
       if (loc.kind == Location::Edge) add({Type::VA_ON_EB, int8(i), int8(loc.id)});
       if (loc.kind == Location::Vertex) add({Type::VA_ON_VB, int8(i), int8(loc.id)});
     }
     for (int j = 0; j < 3; ++j) {
       const int s[3] = {side_b[0][j], side_b[1][j], side_b[2][j]};
       const Location loc = location_from_edge_signs(s);
-      if (loc.kind == Location::Face) add({Type::VB_ON_TA, int8(j), -1});
+      if (loc.kind == Location::Interior) add({Type::VB_ON_TA, int8(j), -1});
       if (loc.kind == Location::Edge) add({Type::VB_ON_EA, int8(j), int8(loc.id)});
       // Vertex-on-vertex was already found from A's side.
     }

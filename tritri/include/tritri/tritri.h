@@ -9,6 +9,10 @@
 //   for (const auto& p : r.points) { /* p.type, p.id0, p.id1 */ }
 //   for (const auto& s : r.segments) { /* r.points[s.p0], r.points[s.p1] */ }
 //
+// The shared 2D geometry of a triangle is public too: tritri::projection (an axis plane
+// where a triangle is not degenerate, projection.h) and tritri::Location (where a point
+// lies in a triangle, location.h).
+//
 // CgalKernel<CK> and ImplicitKernel (LPI / TPI points) are included when CGAL's headers
 // are available.
 #pragma once
@@ -16,6 +20,8 @@
 #include "tritri/sign.h"
 #include "tritri/kernel_concept.h"
 #include "tritri/result.h"
+#include "tritri/location.h"
+#include "tritri/projection.h"
 #include "tritri/double_predicates.h"
 #include "tritri/double_kernel.h"
 #include "tritri/counting_kernel.h"
