@@ -18,8 +18,9 @@
 #include "arrangements/arrange.h"
 #include "arrangements/stats_json.h"
 #include "arrangements/thread_count.h"
-#include "shared_meshes.h"
-#include "test_support.h"
+#include "support/run_program.h"
+#include "support/shared_meshes.h"
+#include "support/temp_dir.h"
 
 
 namespace {

@@ -25,8 +25,9 @@
 
 #include <tritri/tritri.h>
 
-#include "exact_oracle.h"
-#include "pair_generators.h"
+#include "support/classify_oracle.h"
+#include "support/pair_generators.h"
+#include "support/test_scale.h"
 
 namespace {
 

@@ -55,7 +55,7 @@
 #include "arrangements/triangle_soup.h"
 #include "stages/5_triangulate.h"
 #include "arrangements/write_mesh.h"
-#include "shared_meshes.h"
+#include "support/shared_meshes.h"
 
 namespace {
 

@@ -24,7 +24,7 @@
 #include "support/mesh_generators.h"
 #include "arrangements/thread_count.h"
 #include "io/write_off.h"
-#include "test_support.h"
+#include "support/run_program.h"
 
 
 namespace {
