@@ -175,20 +175,24 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
     for (int c = 0; c < 3; ++c) v[3 * i + c] = out.V(i, c);
     exact[i] = out.V_is_exact(i) ? 1 : 0;
   }
-  std::vector<std::int64_t> f(3 * nf), source(nf);
-  nb::list labels_out;
+  std::vector<std::int64_t> f(3 * nf), source(nf), label_set(nf);
   for (std::size_t i = 0; i < nf; ++i) {
     for (int c = 0; c < 3; ++c) f[3 * i + c] = out.F(i, c);
     source[i] = out.source(i);
-    nb::list set;
-    for (int l : out.labels[i]) set.append(l);
-    labels_out.append(nb::tuple(set));
+    label_set[i] = out.label_set(i);
+  }
+  nb::list label_sets;
+  for (const arrangements::LabelSet& set : out.label_sets) {
+    nb::list labels;
+    for (const std::uint32_t l : set) labels.append(l);
+    label_sets.append(nb::tuple(labels));
   }
   nb::dict d;
   d["V"] = numpy_array(std::move(v), {nv, 3});
   d["F"] = numpy_array(std::move(f), {nf, 3});
   d["source"] = numpy_array(std::move(source), {nf});
-  d["labels"] = labels_out;
+  d["label_set"] = numpy_array(std::move(label_set), {nf});
+  d["label_sets"] = label_sets;
   d["V_is_exact"] = numpy_array(std::move(exact), {nv}).attr("astype")("bool");
   d["stats"] = stats_dict(out.stats);
   return d;

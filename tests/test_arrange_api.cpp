@@ -59,7 +59,7 @@ Scene scene(const Rows& v, const Tris& f, const std::vector<int>& labels = {}) {
 
 Scene from_soup(const TriangleSoup& t) {  // generators: one label per triangle
   std::vector<int> labels;
-  for (int l : t.labels) labels.push_back(static_cast<int>(t.label_sets.at(l).at(0)));
+  for (int l : t.label_set) labels.push_back(static_cast<int>(t.label_sets.at(l).at(0)));
   return scene(Rows(t.vertices.begin(), t.vertices.end()), Tris(t.triangles.begin(), t.triangles.end()), labels);
 }
 
@@ -83,7 +83,13 @@ Q dot(const Q3& a, const Q3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 bool is_zero(const Q3& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
 Q3 q3(double x, double y, double z) { return {Q(x), Q(y), Q(z)}; }
 Q3 in_point(const Scene& s, int r) { return q3(s.V(r, 0), s.V(r, 1), s.V(r, 2)); }
-Q3 out_point(const EigenArrangement& a, int v) { return tritri::to_exact(a.exact_vertices.at(v)); }
+// Face f's label set as ints (label_sets[label_set(f)]).
+std::vector<int> labels_of(const EigenArrangement& a, int f) {
+  const arrangements::LabelSet& set = a.label_sets.at(static_cast<std::size_t>(a.label_set(f)));
+  return std::vector<int>(set.begin(), set.end());
+}
+
+Q3 out_point(const EigenArrangement& a, int v) { return tritri::to_exact(a.vertices.at(v)); }
 // Twice the vector area of a triangle: its normal, length 2 * area.
 Q3 normal(const Q3& a, const Q3& b, const Q3& c) { return cross(sub(b, a), sub(c, a)); }
 Q3 out_normal(const EigenArrangement& a, int f) {
@@ -101,8 +107,10 @@ std::size_t edge_count(const Eigen::MatrixXi& F) {
 void expect_well_formed(const EigenArrangement& a, const Scene& s, const std::string& what) {
   const auto nv = a.V.rows(), nf = a.F.rows();
   ASSERT_TRUE(a.V.cols() == 3 && a.F.cols() == 3 && a.V_is_exact.size() == nv && a.source.size() == nf) << what;
-  ASSERT_EQ(a.exact_vertices.size(), std::size_t(nv)) << what;
-  ASSERT_EQ(a.labels.size(), std::size_t(nf)) << what;
+  ASSERT_EQ(a.vertices.size(), std::size_t(nv)) << what;
+  ASSERT_EQ(a.label_set.size(), nf) << what;
+  for (int f = 0; f < nf; ++f)
+    ASSERT_TRUE(a.label_set(f) >= 0 && static_cast<std::size_t>(a.label_set(f)) < a.label_sets.size()) << what;
   // F indexes the referenced vertices only, numbered in first-use order.
   int next = 0;
   for (int f = 0; f < nf; ++f)
@@ -129,13 +137,13 @@ void expect_well_formed(const EigenArrangement& a, const Scene& s, const std::st
           << what << ": V(" << v << ", " << c << ") is not the nearest double";
     }
     EXPECT_EQ(bool(a.V_is_exact(v)), equal) << what << ": V_is_exact(" << v << ")";
-    if (a.exact_vertices[v].is_explicit()) {
+    if (a.vertices[v].is_explicit()) {
       EXPECT_EQ(inputs.count(p), 1u) << what << ": explicit vertex " << v;
     }
   }
   // labels: sorted sets that contain the label of the source row.
   for (int f = 0; f < nf; ++f) {
-    const auto& l = a.labels[f];
+    const auto& l = labels_of(a, f);
     ASSERT_FALSE(l.empty()) << what;
     EXPECT_TRUE(std::adjacent_find(l.begin(), l.end(), std::greater_equal<int>()) == l.end()) << what;
     ASSERT_TRUE(a.source(f) >= 0 && a.source(f) < s.F.rows()) << what;
@@ -178,7 +186,7 @@ void expect_provenance(const EigenArrangement& a, const Scene& s, const std::str
 void expect_same(const EigenArrangement& a, const EigenArrangement& b, const std::string& what) {
   ASSERT_TRUE(a.V.rows() == b.V.rows() && a.F.rows() == b.F.rows()) << what;
   EXPECT_TRUE(a.V == b.V && a.F == b.F && a.source == b.source && a.V_is_exact == b.V_is_exact) << what;
-  EXPECT_EQ(a.labels, b.labels) << what;
+  for (int f = 0; f < a.F.rows(); ++f) EXPECT_EQ(labels_of(a, f), labels_of(b, f)) << what << ": face " << f;
   for (int v = 0; v < a.V.rows(); ++v) EXPECT_EQ(out_point(a, v), out_point(b, v)) << what << ": vertex " << v;
 }
 
@@ -283,15 +291,15 @@ TEST(ArrangeApi, HandScenesCountsPointsAndTiling) {
       EXPECT_EQ(per_source, h.per_source) << what;
       std::set<Q3> fresh;
       for (int v = 0; v < a.V.rows(); ++v)
-        if (!a.exact_vertices[v].is_explicit()) {
-          EXPECT_EQ(a.exact_vertices[v].kind(), tritri::ImplicitPoint::Kind::LPI) << what;
+        if (!a.vertices[v].is_explicit()) {
+          EXPECT_EQ(a.vertices[v].kind(), tritri::ImplicitPoint::Kind::LPI) << what;
           fresh.insert(out_point(a, v));
         }
       EXPECT_EQ(fresh, h.fresh) << what;
       EXPECT_TRUE(a.stats.intersection_points == h.fresh.size() && a.stats.tpi == 0) << what;
       EXPECT_EQ(a.stats.classifier, name_of(c));
       if (h.scene.labels.size() == 0) {
-        for (const auto& l : a.labels) EXPECT_EQ(l, std::vector<int>{0}) << what;  // no labels: all 0
+        for (int f = 0; f < a.F.rows(); ++f) EXPECT_EQ(labels_of(a, f), std::vector<int>{0}) << what;  // no labels: all 0
       }
     }
 }
@@ -321,7 +329,7 @@ TEST(ArrangeApi, CrossingSegmentEndpoints) {
 // merged.
 TEST(ArrangeApi, CubeLabelsAndSharedApex) {
   const EigenArrangement a = run(cube_through_cube());
-  for (int f = 0; f < a.F.rows(); ++f) EXPECT_EQ(a.labels[f], std::vector<int>{a.source(f) < 12 ? 0 : 1});
+  for (int f = 0; f < a.F.rows(); ++f) EXPECT_EQ(labels_of(a, f), std::vector<int>{a.source(f) < 12 ? 0 : 1});
   const EigenArrangement b = run(shared_vertices());
   EXPECT_TRUE(b.stats.merged_vertices == 1 && b.stats.intersection_points == 0);
   std::set<int> users;
@@ -348,7 +356,7 @@ TEST(ArrangeApi, CoplanarOverlapUnitesLabels) {
       };
       std::map<std::vector<int>, Region> regions;
       for (int f = 0; f < a.F.rows(); ++f) {
-        Region& r = regions[a.labels[f]];
+        Region& r = regions[labels_of(a, f)];
         const Q z = out_normal(a, f)[2];
         EXPECT_GT(z, 0) << what;  // oriented like the input, counter-clockwise
         ++r.triangles, r.area2 += z, r.sources.insert(a.source(f));
@@ -377,7 +385,8 @@ TEST(ArrangeApi, DuplicateTrianglesUniteLabels) {
   const EigenArrangement a = run(s);
   expect_well_formed(a, s, "duplicate");
   EXPECT_EQ(a.stats.removed_duplicate, 1u);
-  std::set<std::vector<int>> sets(a.labels.begin(), a.labels.end());
+  std::set<std::vector<int>> sets;
+  for (int f = 0; f < a.F.rows(); ++f) sets.insert(labels_of(a, f));
   EXPECT_EQ(sets, (std::set<std::vector<int>>{{7, INT_MAX}, {3, 7, INT_MAX}, {3}}));
   for (int f = 0; f < a.F.rows(); ++f) EXPECT_NE(a.source(f), 2);
 }
@@ -393,7 +402,7 @@ TEST(ArrangeApi, DisjointTrianglesAreOutputUnchanged) {
   EXPECT_TRUE(a.V == s.V && a.V_is_exact.all());
   ASSERT_EQ(a.F.rows(), 3);
   for (int f = 0; f < 3; ++f) {
-    EXPECT_TRUE(a.source(f) == f && a.labels[f] == std::vector<int>{s.labels(f)}) << f;
+    EXPECT_TRUE(a.source(f) == f && labels_of(a, f) == std::vector<int>{s.labels(f)}) << f;
     bool rotated = false;
     for (int k = 0; k < 3; ++k)
       rotated = rotated || a.F.row(f) == Eigen::RowVector3i(s.F(f, k), s.F(f, (k + 1) % 3), s.F(f, (k + 2) % 3));
@@ -414,7 +423,7 @@ TEST(ArrangeApi, DegenerateOrEmptyInputGivesAnEmptyArrangement) {
     EigenArrangement a;
     EXPECT_NO_THROW(a = arrangements::arrange(s->V, s->F, opts(), s == &no_faces ? &s->labels : nullptr));
     EXPECT_TRUE(a.V.rows() == 0 && a.V.cols() == 3 && a.F.rows() == 0 && a.F.cols() == 3 && a.source.size() == 0 &&
-                a.labels.empty() && a.exact_vertices.empty() && a.V_is_exact.size() == 0);
+                a.label_set.size() == 0 && a.vertices.empty() && a.V_is_exact.size() == 0);
     EXPECT_TRUE(a.stats.out_triangles == 0 && a.stats.out_vertices == 0 && a.stats.euler == 0);
   }
   EXPECT_EQ(run(degenerate).stats.removed_degenerate, 3u);
@@ -540,7 +549,7 @@ TriangleSoup soup_of(const Scene& s) {
   }
   for (int r = 0; r < s.F.rows(); ++r) {
     t.triangles.push_back({s.F(r, 0), s.F(r, 1), s.F(r, 2)});
-    t.labels.push_back(index[s.labels.size() ? s.labels(r) : 0]);
+    t.label_set.push_back(index[s.labels.size() ? s.labels(r) : 0]);
     t.source.push_back(r);
   }
   return t;
@@ -557,13 +566,13 @@ TEST(ArrangeApi, SameOutputAsTheSoupApi) {
           << what;
       for (int v = 0; v < a.V.rows(); ++v) {
         EXPECT_EQ(out_point(a, v), tritri::to_exact(m.vertices[v])) << what << ": vertex " << v;
-        EXPECT_EQ(a.exact_vertices[v].kind(), m.vertices[v].kind()) << what;
+        EXPECT_EQ(a.vertices[v].kind(), m.vertices[v].kind()) << what;
       }
       for (int f = 0; f < a.F.rows(); ++f) {
         for (int k = 0; k < 3; ++k) EXPECT_EQ(a.F(f, k), m.triangles[f][k]) << what << ": face " << f;
         EXPECT_EQ(a.source(f), m.source[f]) << what << ": face " << f;
         const auto& set = m.label_sets.at(m.label_set[f]);
-        EXPECT_EQ(a.labels[f], std::vector<int>(set.begin(), set.end())) << what << ": face " << f;
+        EXPECT_EQ(labels_of(a, f), std::vector<int>(set.begin(), set.end())) << what << ": face " << f;
       }
       const auto counts = [](const arrangements::ArrangeStats& t) {
         return std::vector<std::size_t>{t.in_vertices, t.in_triangles, t.merged_vertices, t.removed_degenerate,

@@ -93,7 +93,7 @@ TEST(CandidatePairs, RefusesThreadCountsAboveTheCapInTheLibraryToo) {
   TriangleSoup soup;
   soup.vertices = V;
   soup.triangles = F;
-  soup.labels = {0, 0};
+  soup.label_set = {0, 0};
   soup.label_sets = {{0}};
   soup.source = {0, 1};
   ArrangeOptions options;

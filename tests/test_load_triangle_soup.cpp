@@ -74,13 +74,13 @@ std::vector<Tri> triangulated(const std::vector<Vec3>& V, const std::vector<std:
 }
 
 void expect_well_formed(const TriangleSoup& s) {
-  ASSERT_EQ(s.labels.size(), s.triangles.size());
+  ASSERT_EQ(s.label_set.size(), s.triangles.size());
   ASSERT_EQ(s.source.size(), s.triangles.size());
   for (const Vec3& v : s.vertices)
     for (double c : v) ASSERT_TRUE(std::isfinite(c));
   for (const Tri& t : s.triangles)
     for (int i : t) ASSERT_TRUE(i >= 0 && i < static_cast<int>(s.vertices.size()));
-  for (int l : s.labels) ASSERT_TRUE(l >= 0 && l < static_cast<int>(s.label_sets.size()));
+  for (int l : s.label_set) ASSERT_TRUE(l >= 0 && l < static_cast<int>(s.label_sets.size()));
 }
 
 // ---- good input -----------------------------------------------------------------------
@@ -91,7 +91,7 @@ TEST(LoadTriangleSoup, ReadsObjCoordinatesExactlyWithTheGivenLabel) {
   const TriangleSoup s = load_triangle_soup(path, 7);
   EXPECT_EQ(s.vertices, (std::vector<Vec3>{{0, 0, 0}, {0.1, 2, 3}, {-1e-300, 4e-320, 5e300}}));
   EXPECT_EQ(s.triangles, (std::vector<Tri>{{0, 1, 2}}));
-  EXPECT_EQ(s.labels, (std::vector<int>{0}));
+  EXPECT_EQ(s.label_set, (std::vector<int>{0}));
   EXPECT_EQ(s.label_sets, (std::vector<LabelSet>{{7}}));
   EXPECT_EQ(s.source, (std::vector<std::int64_t>{0}));
 }
@@ -104,7 +104,7 @@ TEST(LoadTriangleSoup, TriangulatesPolygonsWithTriangulatePolygonInFileOrder) {
   EXPECT_EQ(s.triangles, triangulated(s.vertices, {{0, 1, 2, 3, 4}, {4, 3, 2}, {1, 2, 3, 0}}));
   EXPECT_EQ(s.triangles[3], (Tri{4, 3, 2}));  // a triangle stays as it is
   EXPECT_EQ(s.source, (std::vector<std::int64_t>{0, 1, 2, 3, 4, 5}));
-  EXPECT_EQ(s.labels, (std::vector<int>(6, 0)));
+  EXPECT_EQ(s.label_set, (std::vector<int>(6, 0)));
 }
 
 TEST(LoadTriangleSoup, ObjAcceptsSlashCornersRelativeIndicesTabsCommentsAndIgnoredStatements) {
@@ -248,7 +248,7 @@ TEST(LoadTriangleSoups, LabelsFileIWithIAndContinuesIndicesAndSourceAcrossFiles)
   const auto shifted = [](Tri t, int k) { return Tri{t[0] + k, t[1] + k, t[2] + k}; };
   EXPECT_EQ(s.triangles,
             (std::vector<Tri>{square[0], square[1], {4, 5, 6}, shifted(square[0], 7), shifted(square[1], 7)}));
-  EXPECT_EQ(s.labels, (std::vector<int>{0, 0, 1, 2, 2}));
+  EXPECT_EQ(s.label_set, (std::vector<int>{0, 0, 1, 2, 2}));
   EXPECT_EQ(s.label_sets, (std::vector<LabelSet>{{0}, {1}, {2}}));
   EXPECT_EQ(s.source, (std::vector<std::int64_t>{0, 1, 2, 3, 4}));
 }

@@ -45,7 +45,7 @@ TriangleSoup make_soup(std::vector<Vec3> vertices, std::vector<Tri> triangles, s
   if (sets.empty()) sets.assign(s.triangles.size(), LabelSet{0});
   s.label_sets = std::move(sets);
   for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-    s.labels.push_back(static_cast<int>(t));
+    s.label_set.push_back(static_cast<int>(t));
     s.source.push_back(100 + static_cast<std::int64_t>(t));
   }
   return s;
@@ -54,7 +54,7 @@ TriangleSoup make_soup(std::vector<Vec3> vertices, std::vector<Tri> triangles, s
 // The label set of each output triangle.
 std::vector<LabelSet> labels_of(const TriangleSoup& s) {
   std::vector<LabelSet> out;
-  for (int l : s.labels) out.push_back(s.label_sets[l]);
+  for (int l : s.label_set) out.push_back(s.label_sets[l]);
   return out;
 }
 
@@ -195,7 +195,7 @@ Reference naive_preprocess(const TriangleSoup& in) {
       ++r.degenerate;
       continue;
     }
-    const LabelSet& labels = in.label_sets[in.labels[t]];
+    const LabelSet& labels = in.label_sets[in.label_set[t]];
     bool duplicate = false;
     for (std::size_t k = 0; k < kept.size() && !duplicate; ++k) {
       std::array<Vec3, 3> a = kept[k], b = p;
@@ -346,7 +346,7 @@ TEST(Preprocess, ScalingChangesNothingButTheCoordinates) {
   EXPECT_EQ(scaled_stats.scale_exponent, 10);
   EXPECT_EQ(plain_stats.scale_exponent, 0);
   EXPECT_EQ(plain.triangles, scaled.triangles);
-  EXPECT_EQ(plain.labels, scaled.labels);
+  EXPECT_EQ(plain.label_set, scaled.label_set);
   EXPECT_EQ(plain.source, scaled.source);
   ASSERT_EQ(plain.vertices.size(), scaled.vertices.size());
   for (std::size_t i = 0; i < plain.vertices.size(); ++i)
@@ -360,7 +360,7 @@ TEST(Preprocess, RefusesIllFormedSoupsWithInvalidArgument) {
   EXPECT_THROW(preprocess(make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, -1}}), {}, stats),
                std::invalid_argument);
   TriangleSoup bad_label = make_soup({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
-  bad_label.labels[0] = 3;
+  bad_label.label_set[0] = 3;
   EXPECT_THROW(preprocess(bad_label, {}, stats), std::invalid_argument);
   EXPECT_THROW(preprocess(make_soup({{0, 0, 0}, {1, NAN, 0}, {0, 1, 0}}, {{0, 1, 2}}), {}, stats),
                std::invalid_argument);

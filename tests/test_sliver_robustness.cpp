@@ -143,7 +143,7 @@ TriangleSoup sliver_soup(std::mt19937_64& rng, double offset, double width, int 
     }
     soup.triangles.push_back(tri);
   }
-  soup.labels.assign(soup.triangles.size(), 0);
+  soup.label_set.assign(soup.triangles.size(), 0);
   soup.label_sets = {{0}};
   for (std::size_t t = 0; t < soup.triangles.size(); ++t) soup.source.push_back(static_cast<std::int64_t>(t));
   return soup;

@@ -131,7 +131,7 @@ TriangleSoup hand_soup(std::vector<Vec3> vertices, std::vector<Tri> triangles, s
   TriangleSoup s;
   s.vertices = std::move(vertices);
   s.triangles = std::move(triangles);
-  s.labels = labels.empty() ? std::vector<int>(s.triangles.size(), 0) : std::move(labels);
+  s.label_set = labels.empty() ? std::vector<int>(s.triangles.size(), 0) : std::move(labels);
   s.label_sets = std::move(label_sets);
   if (source.empty())
     for (std::size_t i = 0; i < s.triangles.size(); ++i) source.push_back(static_cast<std::int64_t>(i));
@@ -231,10 +231,46 @@ const Star kRationalStar{{{{0, 0}, {3, 0}, {1.5, 2.5}, {0, 1.75}, {1.5, -0.75}, 
 // ---------------------------------------------------------------------------------------
 // The pipeline stage by stage, keeping what the checks need.
 
+// The triangulation in the graph's numbering (graph point ids, then the new TPIs; owner =
+// soup triangle), so that the checks below can follow graph ids: triangulate() returns
+// the output mesh, renumbered, with TriangulationInfo::output_vertex as the map.
+struct Triangulated {
+  std::vector<ImplicitPoint> points;
+  std::size_t num_tpi = 0;
+  std::vector<Tri> triangles;
+  std::vector<int> owner;
+  std::vector<int> label_set;
+  std::vector<LabelSet> label_sets;
+};
+
+Triangulated in_graph_numbering(const TriangleSoup& soup, const IntersectionGraph& g, const OutputMesh& mesh,
+                                const TriangulationInfo& info) {
+  Triangulated tr;
+  tr.num_tpi = info.new_tpi;
+  tr.points = g.points;
+  std::vector<int> graph_id(mesh.vertices.size(), -1);
+  for (std::size_t i = 0; i < info.output_vertex.size(); ++i) {
+    const int v = info.output_vertex[i];
+    if (i >= g.points.size()) tr.points.push_back(v >= 0 ? mesh.vertices[v] : ImplicitPoint{});
+    if (v >= 0) graph_id[v] = static_cast<int>(i);
+  }
+  std::map<std::int64_t, int> soup_triangle;
+  for (std::size_t t = 0; t < soup.source.size(); ++t) soup_triangle[soup.source[t]] = static_cast<int>(t);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    Tri T = mesh.triangles[t];
+    for (int& v : T) v = graph_id[v];
+    tr.triangles.push_back(T);
+    tr.owner.push_back(soup_triangle.at(mesh.source[t]));
+  }
+  tr.label_set = mesh.label_set;
+  tr.label_sets = mesh.label_sets;
+  return tr;
+}
+
 struct Pipeline {
   TriangleSoup soup;  // preprocessed
   IntersectionGraph graph;
-  Triangulation tr;
+  Triangulated tr;
 };
 
 Pipeline run_pipeline(const TriangleSoup& input, Classifier classifier) {
@@ -245,7 +281,9 @@ Pipeline run_pipeline(const TriangleSoup& input, Classifier classifier) {
   const auto& F = p.soup.triangles;
   const auto records = classify_pairs(V, F, candidate_pairs(V, F), classifier);
   p.graph = build_intersection_graph(V, F, records);
-  p.tr = triangulate(p.soup, p.graph);
+  TriangulationInfo info;
+  const OutputMesh mesh = triangulate(p.soup, p.graph, 0, info);
+  p.tr = in_graph_numbering(p.soup, p.graph, mesh, info);
   return p;
 }
 
@@ -380,7 +418,7 @@ Problems tiling_problems(const Pipeline& p) {
       fail("output triangle " + std::to_string(t) + " is degenerate or oriented against its owner");
     LabelSet labels;
     for (int u : covering) {
-      const LabelSet& l = soup.label_sets[soup.labels[u]];
+      const LabelSet& l = soup.label_sets[soup.label_set[u]];
       labels.insert(labels.end(), l.begin(), l.end());
       covered_area[u] += abs(area2(X[T[0]], X[T[1]], X[T[2]], axis[u]));
     }
@@ -908,7 +946,7 @@ TEST(Arrange, ManyUnreferencedVerticesAreIgnored) {
     s.vertices.push_back({101.0 + 10 * i, 0, 0});
     s.vertices.push_back({100.0 + 10 * i, 1, 0});
     s.triangles.push_back({base, base + 1, base + 2});
-    s.labels.push_back(0);
+    s.label_set.push_back(0);
     s.source.push_back(static_cast<std::int64_t>(s.source.size()));
     for (int j = 0; j < 125; ++j) s.vertices.push_back({-50.0 - i, 0.5 * j, 7.25});
   }

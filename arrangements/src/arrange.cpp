@@ -1,66 +1,24 @@
+// arrange(): the stages of src/stages/ in order, timed, with their counts collected into
+// ArrangeStats.
 #include "pipeline.h"
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
-#include <tbb/parallel_for.h>
-
 #include <chrono>
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "arrangements/thread_count.h"
+#include "stages/1_preprocess.h"
 #include "stages/2_candidate_pairs.h"
 #include "stages/3_classify_pairs.h"
-#include "arrangements/input_error.h"
-#include "support/process_usage.h"
-#include "support/mesh_counts.h"
-#include "stages/1_preprocess.h"
-#include "arrangements/thread_count.h"
+#include "stages/4_intersection_graph.h"
 #include "stages/5_triangulate.h"
+#include "support/mesh_counts.h"
+#include "support/process_usage.h"
 
 namespace arrangements {
-namespace {
-
-// The point p of a model scaled by 2^k, in the unscaled model's frame: its defining
-// points scaled by 2^-k (exact: preprocessing only scales when that is exact both ways).
-tritri::ImplicitPoint unscaled(const tritri::ImplicitPoint& p, int k) {
-  auto back = [k](const Vec3& c) { return Vec3{std::ldexp(c[0], -k), std::ldexp(c[1], -k), std::ldexp(c[2], -k)}; };
-  using Kind = tritri::ImplicitPoint::Kind;
-  if (p.kind() == Kind::Explicit) return tritri::ImplicitPoint::explicit_point(back(p.approx()));
-  Vec3 in[9];
-  for (int i = 0; i < p.input_count(); ++i) in[i] = back(p.input(i));
-  if (p.kind() == Kind::LPI) return tritri::ImplicitPoint::lpi(in[0], in[1], in[2], in[3], in[4]);
-  return tritri::ImplicitPoint::tpi(in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8]);
-}
-
-// The referenced points only, renumbered in first-use order (in the input's frame);
-// provenance mapped back to the input's triangle numbering.
-OutputMesh make_output(const TriangleSoup& soup, Triangulation&& tr, int scale_exponent) {
-  OutputMesh m;
-  std::vector<int> new_id(tr.points.size(), -1);
-  m.triangles.reserve(tr.triangles.size());
-  for (Tri t : tr.triangles) {
-    for (int& v : t) {
-      if (new_id[v] < 0) {
-        new_id[v] = static_cast<int>(m.vertices.size());
-        m.vertices.push_back(tr.points[v]);
-      }
-      v = new_id[v];
-    }
-    m.triangles.push_back(t);
-  }
-  if (scale_exponent != 0)
-    tbb::parallel_for(std::size_t{0}, m.vertices.size(),
-                      [&](std::size_t i) { m.vertices[i] = unscaled(m.vertices[i], scale_exponent); });
-  m.source.reserve(tr.owner.size());
-  for (int o : tr.owner) m.source.push_back(soup.source[o]);
-  m.label_set = std::move(tr.label_set);
-  m.label_sets = std::move(tr.label_sets);
-  return m;
-}
-
-}  // namespace
 
 ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& options, PipelineInternals* keep) {
   if (options.threads > kMaxThreads)  // oneTBB crashes or aborts on huge arenas (thread_count.h)
@@ -76,6 +34,7 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
   s.in_triangles = input.triangles.size();
   const auto start = std::chrono::steady_clock::now();
 
+  // Stage 1: exact preprocessing (merge, drop degenerate and duplicate triangles, scale).
   auto t0 = std::chrono::steady_clock::now();
   PreprocessStats pre;
   PreprocessOptions popt;
@@ -86,11 +45,14 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
   s.removed_duplicate = pre.removed_duplicate;
   s.t_preprocess_s = seconds_since(t0);
 
+  // Stage 2: candidate pairs (overlapping bounding boxes).
   t0 = std::chrono::steady_clock::now();
   const auto pairs = candidate_pairs(soup.vertices, soup.triangles, workers, soup.polygon);
   s.candidate_pairs = pairs.size();
   s.t_detect_s = seconds_since(t0);
 
+  // Stages 3 and 4 (timed together as "classify"): classify every candidate pair, then
+  // merge the records into the intersection graph.
   t0 = std::chrono::steady_clock::now();
   tritri::PredicateCounts counts;
   const auto records = classify_pairs(soup.vertices, soup.triangles, pairs, options.classifier,
@@ -105,13 +67,15 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
   s.segments = graph.segments;
   for (const auto& v : graph.triangle_segments) s.tri_segments += v.size();
 
+  // Stage 5: triangulate every cut triangle; the result is the output mesh.
   t0 = std::chrono::steady_clock::now();
-  Triangulation tr = triangulate(soup, graph);
-  s.tpi = tr.num_tpi;
+  TriangulationInfo info;
+  r.mesh = triangulate(soup, graph, pre.scale_exponent, info);
+  s.tpi = info.new_tpi;
   s.t_triangulate_s = seconds_since(t0);
 
+  // Output counts (the writers are the caller's: arrangements/write_mesh.h).
   t0 = std::chrono::steady_clock::now();
-  r.mesh = make_output(soup, std::move(tr), pre.scale_exponent);
   const MeshCounts c = mesh_counts(r.mesh.triangles);
   s.out_vertices = c.vertices;
   s.out_edges = c.edges;

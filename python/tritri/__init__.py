@@ -220,7 +220,9 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0):
                   they meet only at shared vertices and edges (exactly; the rounded V can
                   differ where V_is_exact is False)
       source      #F int64: the row of the input F each output triangle lies in
-      labels      #F tuples: the sorted labels of the input triangles covering each one
+      label_set   #F int64: index into label_sets of each triangle's label set
+      label_sets  list of distinct tuples: the sorted labels of the input triangles
+                  covering a face (face f: label_sets[label_set[f]])
       stats       dict of the pipeline's counts and stage times: exactly the keys and
                   values of `arrange --stats` (in_vertices, ..., lpi, tpi, out_vertices,
                   ..., threads, t_*_s, peak_rss_mb; see `arrange --help`); t_load_s is 0

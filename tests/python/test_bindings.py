@@ -40,6 +40,13 @@ SWAP = {"VA_ON_VB": "VA_ON_VB", "VA_ON_EB": "VB_ON_EA", "VB_ON_EA": "VA_ON_EB", 
 TYPES = ["VA_ON_VB", "VA_ON_EB", "VB_ON_EA", "VA_ON_TB", "VB_ON_TA", "EA_CROSS_EB", "EA_CROSS_TB", "EB_CROSS_TA"]
 
 
+
+def face_labels(out):
+    """Each output face's label set (label_sets[label_set[f]]), checking the two fields."""
+    assert out["label_set"].dtype == np.int64 and out["label_set"].shape == (len(out["F"]),)
+    assert all(0 <= i < len(out["label_sets"]) for i in out["label_set"])
+    return [out["label_sets"][i] for i in out["label_set"]]
+
 def point_order(p):
     """classify's order of points: by (type as in the C++ enum, id0, id1)."""
     return (TYPES.index(p[0]), p[1], p[2])
@@ -248,7 +255,7 @@ def test_arrange_two_crossing_cubes():
     for k in range(3):
         assert (np.einsum("ij,ij->i", Vo[Fo[:, k]] - V[F[src, 0]], n_src) == 0).all()
     assert (np.einsum("ij,ij->i", n_out, n_src) > 0).all()
-    assert out["labels"] == [(int(labels[s]),) for s in src]
+    assert face_labels(out) == [(int(labels[s]),) for s in src]
     areas = twice_areas(Vo, Fo)
     assert areas[labels[src] == 0].sum() == 48 and areas[labels[src] == 1].sum() == 48
     # The same arrangement with the native classifier and one thread.
@@ -264,13 +271,13 @@ def test_arrange_two_overlapping_coplanar_squares():
     out = tritri.arrange(V, F, labels=labels)
     areas = twice_areas(out["V"], out["F"])
     by_labels = {}
-    for ls, a in zip(out["labels"], areas):
+    for ls, a in zip(face_labels(out), areas):
         by_labels[ls] = by_labels.get(ls, 0) + a
     assert by_labels == {(0,): 6, (1,): 6, (0, 1): 2}
     assert euler_characteristic(out["F"]) == 1
     assert tritri.self_intersections(out["V"], out["F"])[0].shape == (0, 2)
     # Without labels everything is label 0.
-    assert set(tritri.arrange(V, F)["labels"]) == {(0,)}
+    assert set(face_labels(tritri.arrange(V, F))) == {(0,)}
 
 
 def test_arrange_spheres_leaves_intersections_only_at_rounded_vertices():
@@ -377,7 +384,7 @@ def test_load_mesh_reads_what_was_written_and_refuses_bad_files(tmp_path):
 def test_nothing_to_arrange_gives_an_empty_mesh():
     for V, F in ((V3, np.zeros((0, 3), dtype=int)), (np.zeros((3, 3)), F1)):
         out = tritri.arrange(V, F)
-        assert out["V"].shape == (0, 3) and out["F"].shape == (0, 3) and out["labels"] == []
+        assert out["V"].shape == (0, 3) and out["F"].shape == (0, 3) and face_labels(out) == []
         assert out["stats"]["out_triangles"] == 0
 
 
@@ -490,9 +497,9 @@ def test_unusual_but_valid_arrays_give_the_same_answers():
     ]
     for Vv, Fv, lv in variants:
         out = tritri.arrange(Vv, Fv, labels=lv)
-        assert out["F"].tolist() == expected["F"].tolist() and out["labels"] == expected["labels"]
+        assert out["F"].tolist() == expected["F"].tolist() and face_labels(out) == face_labels(expected)
         assert tritri.self_intersections(Vv, Fv)[0].tolist() == tritri.self_intersections(V, F)[0].tolist()
-    assert tritri.arrange(V3, F1, labels=[2**31 - 1])["labels"] == [(2**31 - 1,)]  # the largest label
+    assert face_labels(tritri.arrange(V3, F1, labels=[2**31 - 1])) == [(2**31 - 1,)]  # the largest label
     r = tritri.classify(np.asfortranarray(T)[:, ::-1][:, ::-1], T.astype(np.float32))
     assert r == tritri.classify(T, T)
     for empty in ([], np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int8)):

@@ -15,20 +15,22 @@
 //            all cores), scale, count_predicates
 //   labels   optional #F vector of labels >= 0, one per row of F (nullptr: all 0), e.g.
 //            the index of the mesh each triangle came from
-// Output: EigenArrangement
-//   V                #V_out by 3: the output vertices rounded to the nearest double
+// Output: EigenArrangement, the OutputMesh (output_mesh.h) with its fields under the same
+// names, the index lists as Eigen matrices:
+//   vertices         #V_out exact output vertices (explicit input points, LPIs, TPIs);
+//                    tritri::to_exact gives their rational coordinates
+//   V                #V_out by 3: `vertices` rounded to the nearest double
 //                    (tritri::to_double); exact for input vertices, rounded for new
 //                    intersection points (see V_is_exact)
-//   F                #F_out by 3: triangles, indices into V / exact_vertices, each oriented
+//   V_is_exact       #V_out: V.row(v) equals vertices[v] exactly
+//   F                #F_out by 3: the triangles, indices into V / vertices, each oriented
 //                    like the input triangle it lies in
 //   source           #F_out: the row of the input F that each output face lies in (for a
 //                    region where coplanar input triangles overlap, the first of them in
 //                    the pipeline's order)
-//   labels           #F_out sorted label sets: the union of the labels of every input
-//                    triangle that covers the face
-//   exact_vertices   #V_out exact output vertices (explicit input points, LPIs, TPIs);
-//                    tritri::to_exact gives their rational coordinates
-//   V_is_exact       #V_out: V.row(v) equals exact_vertices[v] exactly
+//   label_set        #F_out: index into label_sets of each face's label set
+//   label_sets       distinct sorted label sets: the union of the labels of every input
+//                    triangle that covers a face
 //   stats            ArrangeStats of the run (counts, stage times)
 //
 // Throws std::invalid_argument for input the pipeline cannot take: V or F without 3
@@ -64,12 +66,13 @@
 namespace arrangements {
 
 struct EigenArrangement {
+  std::vector<tritri::ImplicitPoint> vertices;
   Eigen::MatrixXd V;
+  Eigen::Matrix<bool, Eigen::Dynamic, 1> V_is_exact;
   Eigen::MatrixXi F;
   Eigen::VectorXi source;
-  std::vector<std::vector<int>> labels;
-  std::vector<tritri::ImplicitPoint> exact_vertices;
-  Eigen::Matrix<bool, Eigen::Dynamic, 1> V_is_exact;
+  Eigen::VectorXi label_set;
+  std::vector<LabelSet> label_sets;
   ArrangeStats stats;
 };
 
@@ -101,7 +104,7 @@ inline TriangleSoup eigen_soup(const Eigen::MatrixXd& V, const Eigen::MatrixXi& 
       soup.vertices[r][c] = V(r, c);
     }
   soup.triangles.resize(static_cast<std::size_t>(nf));
-  soup.labels.resize(static_cast<std::size_t>(nf));
+  soup.label_set.resize(static_cast<std::size_t>(nf));
   soup.source.resize(static_cast<std::size_t>(nf));
   std::map<int, int> set_of_label;  // label -> index of {label} in soup.label_sets
   for (Eigen::Index r = 0; r < nf; ++r) {
@@ -118,7 +121,7 @@ inline TriangleSoup eigen_soup(const Eigen::MatrixXd& V, const Eigen::MatrixXi& 
                                   " is negative");
     auto [it, added] = set_of_label.try_emplace(label, static_cast<int>(soup.label_sets.size()));
     if (added) soup.label_sets.push_back({static_cast<std::uint32_t>(label)});
-    soup.labels[r] = it->second;
+    soup.label_set[r] = it->second;
     soup.source[r] = r;
   }
   return soup;
@@ -149,14 +152,14 @@ inline EigenArrangement arrange(const Eigen::MatrixXd& V, const Eigen::MatrixXi&
   });
   out.F.resize(nf, 3);
   out.source.resize(nf);
-  out.labels.resize(static_cast<std::size_t>(nf));
+  out.label_set.resize(nf);
   for (Eigen::Index f = 0; f < nf; ++f) {
     for (int c = 0; c < 3; ++c) out.F(f, c) = mesh.triangles[f][c];
     out.source(f) = static_cast<int>(mesh.source[f]);
-    const LabelSet& set = mesh.label_sets[mesh.label_set[f]];
-    out.labels[f].assign(set.begin(), set.end());
+    out.label_set(f) = mesh.label_set[f];
   }
-  out.exact_vertices = std::move(mesh.vertices);
+  out.vertices = std::move(mesh.vertices);
+  out.label_sets = std::move(mesh.label_sets);
   out.stats = std::move(result.stats);
   return out;
 }

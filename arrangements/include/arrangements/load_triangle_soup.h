@@ -23,7 +23,7 @@
 //   an empty soup.
 //
 // Polygons: a face with corners c0 c1 ... c(n-1), n > 3, becomes the n - 2 triangles of
-// triangulate_polygon (arrangements/triangulate_polygon.h) in place of the face, so every
+// triangulate_polygon (arrangements/src/io/triangulate_polygon.h) in place of the face, so every
 // face keeps n - 2 consecutive entries of `source`; a triangle is kept as it is. Faces with
 // repeated corners are kept (preprocess removes degenerate triangles).
 //

@@ -7,7 +7,7 @@
 //   triangles   indices into `vertices`, each oriented like the input triangle it lies in
 //   source      per triangle: the index of the input triangle it lies in, in the input
 //               files' concatenated triangle lists (an n-corner polygon face is n - 2
-//               consecutive entries: arrangements/triangulate_polygon.h)
+//               consecutive entries: arrangements/src/io/triangulate_polygon.h)
 //               (TriangleSoup::source); for a region shared by coplanar overlapping
 //               triangles, the one that the preprocessing numbered first
 //   label_set   per triangle: index into label_sets; the union of the labels of every

@@ -3,7 +3,7 @@
 // TriangleSoup: the pipeline's plain input and intermediate data.
 //   vertices   #V list of exact double coordinates
 //   triangles  #F list of vertex indices into `vertices`
-//   labels     #F label-set index per triangle, into `label_sets`
+//   label_set  #F label-set index per triangle, into `label_sets`
 //   label_sets distinct sorted label sets (any number of labels per triangle: no cap)
 //   source     #F index of each triangle in the concatenated input files' triangle lists
 //              (after triangulation of polygons, in file order), so that output
@@ -28,7 +28,7 @@ using LabelSet = std::vector<std::uint32_t>;  // sorted, unique
 struct TriangleSoup {
   std::vector<Vec3> vertices;
   std::vector<Tri> triangles;
-  std::vector<int> labels;
+  std::vector<int> label_set;
   std::vector<LabelSet> label_sets;
   std::vector<std::int64_t> source;
   std::vector<std::int64_t> polygon;

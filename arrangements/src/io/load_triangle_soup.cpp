@@ -143,7 +143,7 @@ TriangleSoup load_triangle_soup(const std::string& path, std::uint32_t label) {
   TriangleSoup soup;
   soup.vertices = std::move(builder.vertices);
   soup.triangles = std::move(builder.triangles);
-  soup.labels.assign(soup.triangles.size(), 0);
+  soup.label_set.assign(soup.triangles.size(), 0);
   soup.label_sets = {LabelSet{label}};
   soup.source.resize(soup.triangles.size());
   for (std::size_t t = 0; t < soup.source.size(); ++t) soup.source[t] = static_cast<std::int64_t>(t);
@@ -175,7 +175,7 @@ TriangleSoup load_triangle_soups(const std::vector<std::string>& paths) {
     for (std::size_t t = 0; t < one.triangles.size(); ++t) {
       const Tri& tri = one.triangles[t];
       all.triangles.push_back({tri[0] + offset, tri[1] + offset, tri[2] + offset});
-      all.labels.push_back(static_cast<int>(i));
+      all.label_set.push_back(static_cast<int>(i));
       all.source.push_back(source_offset + one.source[t]);
     }
     all.label_sets.push_back(LabelSet{static_cast<std::uint32_t>(i)});

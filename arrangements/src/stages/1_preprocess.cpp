@@ -58,8 +58,8 @@ bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 void check_well_formed(const TriangleSoup& in) {
   const std::size_t nf = in.triangles.size();
-  if (in.labels.size() != nf || in.source.size() != nf || (!in.polygon.empty() && in.polygon.size() != nf))
-    throw std::invalid_argument("preprocess: labels, source (and polygon) must have one entry per triangle");
+  if (in.label_set.size() != nf || in.source.size() != nf || (!in.polygon.empty() && in.polygon.size() != nf))
+    throw std::invalid_argument("preprocess: label_set, source (and polygon) must have one entry per triangle");
   for (std::size_t v = 0; v < in.vertices.size(); ++v)
     for (double c : in.vertices[v])
       if (!std::isfinite(c))
@@ -71,9 +71,9 @@ void check_well_formed(const TriangleSoup& in) {
       if (i < 0 || i >= nv)
         throw std::invalid_argument("preprocess: triangle " + std::to_string(t) + " has vertex index " +
                                     std::to_string(i) + " out of range");
-    if (in.labels[t] < 0 || in.labels[t] >= ns)
+    if (in.label_set[t] < 0 || in.label_set[t] >= ns)
       throw std::invalid_argument("preprocess: triangle " + std::to_string(t) + " has label set index " +
-                                  std::to_string(in.labels[t]) + " out of range");
+                                  std::to_string(in.label_set[t]) + " out of range");
   }
 }
 
@@ -146,15 +146,15 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
       const auto [it, inserted] = kept_by_corners.try_emplace(key, static_cast<int>(kept.size()));
       if (!inserted) {
         ++stats.removed_duplicate;
-        if (in.labels[t] != kept_set[it->second]) {
-          const LabelSet& labels = in.label_sets[in.labels[t]];
+        if (in.label_set[t] != kept_set[it->second]) {
+          const LabelSet& labels = in.label_sets[in.label_set[t]];
           std::vector<std::uint32_t>& added = added_labels[it->second];
           added.insert(added.end(), labels.begin(), labels.end());
         }
         continue;
       }
       kept.push_back(p);
-      kept_set.push_back(in.labels[t]);
+      kept_set.push_back(in.label_set[t]);
       kept_source.push_back(in.source[t]);
       if (!in.polygon.empty()) kept_polygon.push_back(in.polygon[t]);
     }
@@ -172,7 +172,7 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
     return it->second;
   };
   out.triangles.reserve(kept.size());
-  out.labels.reserve(kept.size());
+  out.label_set.reserve(kept.size());
   for (std::size_t t = 0; t < kept.size(); ++t) {
     Tri tri;
     for (int i = 0; i < 3; ++i) {
@@ -188,11 +188,11 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
     if (added != added_labels.end()) {
       LabelSet labels = in.label_sets[kept_set[t]];
       labels.insert(labels.end(), added->second.begin(), added->second.end());
-      out.labels.push_back(out_set_of(normalized(std::move(labels))));
+      out.label_set.push_back(out_set_of(normalized(std::move(labels))));
     } else {
       int& set = out_set_of_input_set[kept_set[t]];
       if (set < 0) set = out_set_of(normalized(in.label_sets[kept_set[t]]));
-      out.labels.push_back(set);
+      out.label_set.push_back(set);
     }
   }
   out.source = std::move(kept_source);

@@ -1,51 +1,47 @@
 // arrangements/src/stages/5_triangulate.h
 //
-// Stage 6 of the pipeline: split every triangle that has intersection points or
-// constraint segments, exactly.
+// Stage 5 of the pipeline (the last): split every triangle that has intersection points,
+// constraint segments or coplanar partners, exactly, and assemble the output mesh.
 //
-// Triangulation triangulate(soup, graph)
-//   soup   the preprocessed soup (merged vertices, no degenerate or duplicate triangles)
-//   graph  its intersection graph after propagate_coplanar
-// returns
-//   points       graph.points followed by the new TPIs (crossings of two constraint
-//                segments inside a triangle; distinct from each other and from every
-//                graph point, compared exactly)
-//   num_tpi      the number of new TPIs
-//   triangles    the output triangles (indices into points); a triangle without points
-//                or constraints is copied as it is
-//   owner        per output triangle, the soup triangle it lies in (for a region covered
-//                by several coplanar triangles: the smallest such triangle id; the region
-//                is emitted once)
-//   label_set / label_sets   per output triangle, the union of the label sets of every soup
-//                triangle that covers it
-// Exactness: every decision is orient2d on implicit points in the triangle's dominant
-// axis projection (largest normal component; checked exactly to be non-degenerate),
-// through tritri's filtered exact predicates on offset points; TPIs are implicit.
+// OutputMesh triangulate(soup, graph, scale_exponent, info)
+//   soup            the preprocessed soup (stage 1: merged vertices, no degenerate or
+//                   duplicate triangles)
+//   graph           its intersection graph (stage 4, coplanar partners already sharing)
+//   scale_exponent  the preprocessing's power-of-two scaling k (0: none); the output
+//                   points are rebuilt from their unscaled defining points, exactly
+// returns the arrangement (output_mesh.h): the referenced points only, in first-use order
+// of the triangles; soup triangles in order, each one either copied (nothing cuts it) or
+// replaced by its pieces; a region covered by several coplanar triangles is emitted once,
+// by the smallest soup triangle covering it, labelled with the union of their label sets;
+// source maps back to the input numbering (TriangleSoup::source).
+// info (filled):
+//   new_tpi         the TPIs created (crossings of two constraint segments inside a
+//                   triangle; distinct from each other and from every graph point,
+//                   compared exactly): the stats key `tpi`
+//   output_vertex   per graph point id, then per new TPI (ids graph.points.size() + k, in
+//                   exact lexicographic order): its index in the mesh's vertices, -1 if no
+//                   output triangle uses it (for checks that follow graph ids into the mesh)
+// Exactness: see 5_triangulate_triangle.h; points are never rounded here.
 // Output does not depend on the number of threads.
-// Cost: per triangle, O(n log n)-ish expected point insertion by walking plus constraint
-// insertion by edge flips (worst case quadratic in the triangle's points); parallel over
-// triangles (TBB).
+// Cost: the per-triangle triangulations, parallel over triangles (TBB), plus
+// O(T log T) for deduplicating T new TPIs.
 #pragma once
 
 #include <cstddef>
 #include <vector>
 
-#include <tritri/implicit_point.h>
-
-#include "stages/4_intersection_graph.h"
+#include "arrangements/output_mesh.h"
 #include "arrangements/triangle_soup.h"
+#include "stages/4_intersection_graph.h"
 
 namespace arrangements {
 
-struct Triangulation {
-  std::vector<tritri::ImplicitPoint> points;
-  std::size_t num_tpi = 0;
-  std::vector<Tri> triangles;
-  std::vector<int> owner;
-  std::vector<int> label_set;
-  std::vector<LabelSet> label_sets;
+struct TriangulationInfo {
+  std::size_t new_tpi = 0;
+  std::vector<int> output_vertex;
 };
 
-Triangulation triangulate(const TriangleSoup& soup, const IntersectionGraph& graph);
+OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& graph, int scale_exponent,
+                       TriangulationInfo& info);
 
 }  // namespace arrangements

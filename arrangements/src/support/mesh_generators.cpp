@@ -8,7 +8,7 @@ namespace arrangements {
 namespace {
 
 void finish(TriangleSoup& s) {
-  s.labels.assign(s.triangles.size(), 0);
+  s.label_set.assign(s.triangles.size(), 0);
   s.label_sets = {LabelSet{0}};
   s.source.resize(s.triangles.size());
   for (std::size_t i = 0; i < s.source.size(); ++i) s.source[i] = static_cast<std::int64_t>(i);
@@ -98,7 +98,7 @@ TriangleSoup concatenate(const TriangleSoup& a, const TriangleSoup& b) {
   for (const Tri& t : b.triangles) s.triangles.push_back({base + t[0], base + t[1], base + t[2]});
   finish(s);
   s.label_sets = {LabelSet{0}, LabelSet{1}};
-  for (std::size_t i = a.triangles.size(); i < s.triangles.size(); ++i) s.labels[i] = 1;
+  for (std::size_t i = a.triangles.size(); i < s.triangles.size(); ++i) s.label_set[i] = 1;
   return s;
 }
 
