@@ -11,7 +11,6 @@
 
 #include "support/arrangement_scenes.h"
 #include "support/exact_oracle.h"
-#include "support/test_scale.h"
 #include "support/triangulation_checks.h"
 
 namespace {
@@ -21,7 +20,6 @@ using tritri_test::Q;
 using tritri_test::Q3;
 using tritri_test::exact;
 
-//
 // A triangulated polygon (a disc) with B boundary and I interior vertices and no other
 // vertices has F = 2I + B - 2 triangles and E = 3I + 2B - 3 edges, whatever the
 // triangulation (V - E + F = 1 and 3F + B = 2E). Gluing complexes: chi(X u Y) = chi(X) +

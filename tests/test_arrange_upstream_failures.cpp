@@ -23,7 +23,6 @@
 #include "pipeline.h"
 #include "support/arrangement_scenes.h"
 #include "support/exact_oracle.h"
-#include "support/test_scale.h"
 #include "support/triangulation_checks.h"
 #include "support/temp_dir.h"
 

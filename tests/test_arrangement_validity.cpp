@@ -20,7 +20,6 @@
 #include "arrangements/input_error.h"
 #include "arrangements/load_triangle_soup.h"
 #include "support/arrangement_scenes.h"
-#include "support/exact_oracle.h"
 #include "support/test_scale.h"
 #include "support/triangulation_checks.h"
 #include "support/shared_meshes.h"
@@ -28,9 +27,6 @@
 namespace {
 
 using namespace tritri_test::arrangement;
-using tritri_test::Q;
-using tritri_test::Q3;
-using tritri_test::exact;
 using tritri_test::test_scale;
 namespace fs = std::filesystem;
 

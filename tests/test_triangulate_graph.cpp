@@ -14,13 +14,11 @@
 #include "pipeline.h"
 #include "support/arrangement_scenes.h"
 #include "support/exact_oracle.h"
-#include "support/test_scale.h"
 #include "support/triangulation_checks.h"
 
 namespace {
 
 using namespace tritri_test::arrangement;
-using tritri_test::Q;
 using tritri_test::Q3;
 using tritri_test::exact;
 using tritri_test::in_closed_triangle;

@@ -25,7 +25,6 @@ namespace {
 
 using namespace tritri_test::arrangement;
 using tritri_test::Q;
-using tritri_test::Q3;
 using tritri_test::exact;
 using tritri_test::area2;
 using tritri_test::test_scale;

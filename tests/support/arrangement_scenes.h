@@ -28,7 +28,7 @@ using namespace ::arrangements;
 // A soup written by hand: one label set per triangle index in `labels` (default all 0 with
 // label_sets {{0}}), `source` defaults to the triangle index.
 inline TriangleSoup hand_soup(std::vector<Vec3> vertices, std::vector<Tri> triangles, std::vector<int> labels = {},
-                       std::vector<LabelSet> label_sets = {{0}}, std::vector<std::int64_t> source = {}) {
+                              std::vector<LabelSet> label_sets = {{0}}, std::vector<std::int64_t> source = {}) {
   TriangleSoup s;
   s.vertices = std::move(vertices);
   s.triangles = std::move(triangles);

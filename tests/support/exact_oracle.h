@@ -12,6 +12,7 @@
 //   sub, cross, dot, normal, is_zero           vector arithmetic on Q3
 //   ZPoint             a Q3 over one common denominator, for fast determinants
 //   orient3d, orient2d(plane), compare, collinear   exact signs, -1, 0 or +1
+//   kPlanes, projected_axes                    the projections of the 2D predicates
 //   area2(a, b, c, axis), projection_axis, in_closed_triangle   projected areas and
 //                      containment (area2 and projection_axis also on CGAL points)
 //   in_open_segment, in_open_face              incidences on CGAL points (any kernel)

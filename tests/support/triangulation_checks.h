@@ -70,8 +70,8 @@ struct Triangulated {
   std::vector<LabelSet> label_sets;
 };
 
-inline Triangulated in_graph_numbering(const TriangleSoup& soup, const IntersectionGraph& g, const OutputMesh& mesh,
-                                const TriangulationInfo& info) {
+inline Triangulated in_graph_numbering(const TriangleSoup& soup, const IntersectionGraph& g,
+                                       const OutputMesh& mesh, const TriangulationInfo& info) {
   Triangulated tr;
   tr.num_tpi = info.new_tpi;
   tr.points = g.points;
@@ -94,6 +94,7 @@ inline Triangulated in_graph_numbering(const TriangleSoup& soup, const Intersect
   return tr;
 }
 
+// What run_stages keeps: the input of the triangulation and its output.
 struct Pipeline {
   TriangleSoup soup;  // preprocessed
   IntersectionGraph graph;
@@ -122,6 +123,7 @@ inline ArrangeResult run_arrange(const TriangleSoup& input, Classifier classifie
   return arrange(input, o);
 }
 
+// ---------------------------------------------------------------------------------------
 // Independent validity check: every pair of output triangles classified with
 // tritri on the implicit points; the only contact allowed is vertex-on-vertex at a vertex
 // both triangles name by the same id (so a shared vertex or a shared edge). Also: no two
@@ -318,6 +320,10 @@ inline Problems graph_problems(const Pipeline& p) {
   return out;
 }
 
+// ---------------------------------------------------------------------------------------
+// Whole outputs.
+
+// The stats describe the mesh; every vertex is used; one source and label set per triangle.
 inline void expect_stats_match_mesh(const ArrangeResult& r, const std::string& what) {
   const MeshCounts c = mesh_counts(r.mesh.triangles);
   EXPECT_EQ(r.stats.out_vertices, c.vertices) << what;
@@ -329,6 +335,7 @@ inline void expect_stats_match_mesh(const ArrangeResult& r, const std::string& w
   EXPECT_EQ(r.mesh.label_set.size(), r.mesh.triangles.size()) << what;
 }
 
+// Equal triangles, provenance, labels and exact vertices.
 inline bool same_output(const OutputMesh& a, const OutputMesh& b) {
   if (a.triangles != b.triangles || a.source != b.source || a.label_set != b.label_set ||
       a.label_sets != b.label_sets || a.vertices.size() != b.vertices.size())
@@ -338,6 +345,7 @@ inline bool same_output(const OutputMesh& a, const OutputMesh& b) {
   return true;
 }
 
+// The counts of a mesh with v vertices, e edges and f triangles (Euler characteristic v - e + f).
 inline MeshCounts counts(std::size_t v, std::size_t e, std::size_t f) {
   return {v, e, f, static_cast<long long>(v) - static_cast<long long>(e) + static_cast<long long>(f)};
 }
