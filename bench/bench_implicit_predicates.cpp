@@ -21,7 +21,8 @@
 
 #include <tritri/tritri.h>
 
-#include "../tests/implicit_generators.h"
+#include "../tests/support/implicit_recipes.h"
+#include "../tests/support/test_scale.h"
 
 namespace {
 

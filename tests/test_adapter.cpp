@@ -8,13 +8,10 @@
 // coordinates, that every record point lies on the simplices its locations claim.
 #include <gtest/gtest.h>
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-
 #include <tritri/tritri.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <random>
 #include <set>
@@ -25,6 +22,8 @@
 #include "support/auxiliary_point.h"
 #include "stages/3_classify_native.h"
 #include "stages/3_classify_tritri.h"
+#include "support/exact_oracle.h"
+#include "support/test_scale.h"
 
 namespace {
 
@@ -35,25 +34,17 @@ using arrangements::Tri;
 using arrangements::Vec3;
 using tritri::Type;
 
-using EK = CGAL::Epeck;
+using tritri_test::exact;
+using tritri_test::test_scale;
+using EK = tritri_test::ExactKernel;
 using EP = EK::Point_3;
-using Exact = std::array<mpq_class, 3>;
+using Exact = tritri_test::Q3;
 using ExactSegment = std::pair<Exact, Exact>;
 
-double test_scale() {
-  const char* s = std::getenv("TRITRI_TEST_SCALE");
-  return s ? std::atof(s) : 1.0;
-}
+EP ep(const Exact& e) { return tritri_test::to_cgal<EK>(e); }
+EP ep(const Vec3& v) { return tritri_test::to_cgal<EK>(v); }
 
-Exact exact(const Vec3& v) { return {mpq_class(v[0]), mpq_class(v[1]), mpq_class(v[2])}; }
-EP ep(const Exact& e) { return EP(EK::FT(e[0]), EK::FT(e[1]), EK::FT(e[2])); }
-EP ep(const Vec3& v) { return EP(v[0], v[1], v[2]); }
-
-std::string str(const Exact& e) {
-  std::ostringstream os;
-  os << "(" << e[0] << ", " << e[1] << ", " << e[2] << ")";
-  return os.str();
-}
+std::string str(const Exact& e) { return tritri_test::to_string(e); }
 std::string str(const Location& l) {
   const char* k[] = {"Outside", "Interior", "Edge", "Vertex"};
   return std::string(k[l.kind]) + "(" + std::to_string(l.id) + ")";
@@ -65,11 +56,6 @@ std::optional<tritri::ImplicitPoint> lpi_of(const std::vector<Vec3>& V, const st
   std::array<Vec3, 5> c;
   for (int k = 0; k < 5; ++k) c[k] = key.v[k] >= 0 ? V[key.v[k]] : arrangements::auxiliary_point(V, F[-1 - key.v[k]]);
   return tritri::ImplicitPoint::try_lpi(c[0], c[1], c[2], c[3], c[4]);
-}
-
-Exact exact_of(const tritri::ImplicitPoint& p) {
-  const auto q = tritri::to_exact(p);
-  return {mpq_class(q[0].mpq()), mpq_class(q[1].mpq()), mpq_class(q[2].mpq())};
 }
 
 // The exact point of a record point; fails the test (and returns nullopt) for an LPI that
@@ -93,7 +79,7 @@ std::optional<Exact> point_of(const std::vector<Vec3>& V, const std::vector<Tri>
                   << p.lpi.v[3] << ", " << p.lpi.v[4] << ")";
     return std::nullopt;
   }
-  return exact_of(*q);
+  return exact(*q);
 }
 
 // What a record says, in exact terms: per point its coordinates, existing vertex id (or -1)
@@ -467,20 +453,11 @@ bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) { return CGAL::colli
 // Does exact point x lie where location l claims, in triangle t (Epeck predicates)?
 bool lies_at(const Exact& x, const Location& l, const std::array<Vec3, 3>& t) {
   const EP p = ep(x);
-  const EP v[3] = {ep(t[0]), ep(t[1]), ep(t[2])};
+  const std::array<EP, 3> v = {ep(t[0]), ep(t[1]), ep(t[2])};
   switch (l.kind) {
     case Location::Vertex: return l.id >= 0 && l.id < 3 && p == v[l.id];
-    case Location::Edge: {
-      if (l.id < 0 || l.id > 2) return false;
-      const EP &s = v[l.id], &e = v[(l.id + 1) % 3];
-      return CGAL::collinear(s, e, p) && CGAL::collinear_are_strictly_ordered_along_line(s, p, e);
-    }
-    default: {
-      if (CGAL::orientation(v[0], v[1], v[2], p) != CGAL::COPLANAR) return false;
-      for (int i = 0; i < 3; ++i)
-        if (CGAL::coplanar_orientation(v[i], v[(i + 1) % 3], v[(i + 2) % 3], p) != CGAL::POSITIVE) return false;
-      return true;
-    }
+    case Location::Edge: return l.id >= 0 && l.id <= 2 && tritri_test::in_open_segment(p, v[l.id], v[(l.id + 1) % 3]);
+    default: return tritri_test::in_open_face(p, v);
   }
 }
 

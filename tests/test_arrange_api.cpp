@@ -7,13 +7,14 @@
 // output triangle lies in the closed input triangle its source names, oriented like it.
 #include <gtest/gtest.h>
 
-#include <CGAL/Gmpq.h>
 #include <Eigen/Core>
 
 #include <arrangements/arrange.h>
 #include <arrangements/arrange_eigen.h>
 #include "support/mesh_generators.h"
 #include <tritri/implicit_point.h>
+
+#include "support/exact_oracle.h"
 
 #include <algorithm>
 #include <array>
@@ -35,8 +36,8 @@ using arrangements::ArrangeOptions;
 using arrangements::Classifier;
 using arrangements::EigenArrangement;
 using arrangements::TriangleSoup;
-using Q = CGAL::Gmpq;
-using Q3 = std::array<Q, 3>;
+using tritri_test::Q;
+using tritri_test::Q3;
 using Rows = std::vector<std::array<double, 3>>;
 using Tris = std::vector<std::array<int, 3>>;
 
@@ -73,14 +74,8 @@ EigenArrangement run(const Scene& s, const ArrangeOptions& o = opts()) {
   return arrangements::arrange(s.V, s.F, o, s.labels.size() ? &s.labels : nullptr);
 }
 
-// --- exact geometry on rationals --------------------------------------------------------
-Q3 sub(const Q3& a, const Q3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+// --- exact geometry on rationals (the rest from support/exact_oracle.h) ------------------
 Q3 add(const Q3& a, const Q3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Q3 cross(const Q3& a, const Q3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Q dot(const Q3& a, const Q3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-bool is_zero(const Q3& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
 Q3 q3(double x, double y, double z) { return {Q(x), Q(y), Q(z)}; }
 Q3 in_point(const Scene& s, int r) { return q3(s.V(r, 0), s.V(r, 1), s.V(r, 2)); }
 // Face f's label set as ints (label_sets[label_set(f)]).
@@ -89,11 +84,10 @@ std::vector<int> labels_of(const EigenArrangement& a, int f) {
   return std::vector<int>(set.begin(), set.end());
 }
 
-Q3 out_point(const EigenArrangement& a, int v) { return tritri::to_exact(a.vertices.at(v)); }
+Q3 out_point(const EigenArrangement& a, int v) { return tritri_test::exact(a.vertices.at(v)); }
 // Twice the vector area of a triangle: its normal, length 2 * area.
-Q3 normal(const Q3& a, const Q3& b, const Q3& c) { return cross(sub(b, a), sub(c, a)); }
 Q3 out_normal(const EigenArrangement& a, int f) {
-  return normal(out_point(a, a.F(f, 0)), out_point(a, a.F(f, 1)), out_point(a, a.F(f, 2)));
+  return tritri_test::normal(out_point(a, a.F(f, 0)), out_point(a, a.F(f, 1)), out_point(a, a.F(f, 2)));
 }
 
 std::size_t edge_count(const Eigen::MatrixXi& F) {
@@ -132,7 +126,7 @@ void expect_well_formed(const EigenArrangement& a, const Scene& s, const std::st
       const double d = a.V(v, c);
       ASSERT_TRUE(std::isfinite(d)) << what;
       equal = equal && Q(d) == p[c];
-      auto err = [&](double x) { return p[c] > Q(x) ? p[c] - Q(x) : Q(x) - p[c]; };
+      auto err = [&](double x) -> Q { return p[c] > Q(x) ? p[c] - Q(x) : Q(x) - p[c]; };
       EXPECT_TRUE(err(d) <= err(std::nextafter(d, -INFINITY)) && err(d) <= err(std::nextafter(d, INFINITY)))
           << what << ": V(" << v << ", " << c << ") is not the nearest double";
     }
@@ -162,6 +156,7 @@ void expect_well_formed(const EigenArrangement& a, const Scene& s, const std::st
 // is non-degenerate and is oriented like it. tiling (no coplanar overlaps, no removed
 // triangles): the output triangles of each source add up to it (sum of vector areas).
 void expect_provenance(const EigenArrangement& a, const Scene& s, const std::string& what, bool tiling = false) {
+  using namespace tritri_test;  // sub, cross, dot, is_zero, normal
   std::vector<Q3> sum(s.F.rows(), q3(0, 0, 0));
   for (int f = 0; f < a.F.rows(); ++f) {
     const int src = a.source(f);
@@ -565,7 +560,7 @@ TEST(ArrangeApi, SameOutputAsTheSoupApi) {
       ASSERT_TRUE(std::size_t(a.V.rows()) == m.vertices.size() && std::size_t(a.F.rows()) == m.triangles.size())
           << what;
       for (int v = 0; v < a.V.rows(); ++v) {
-        EXPECT_EQ(out_point(a, v), tritri::to_exact(m.vertices[v])) << what << ": vertex " << v;
+        EXPECT_EQ(out_point(a, v), tritri_test::exact(m.vertices[v])) << what << ": vertex " << v;
         EXPECT_EQ(a.vertices[v].kind(), m.vertices[v].kind()) << what;
       }
       for (int f = 0; f < a.F.rows(); ++f) {

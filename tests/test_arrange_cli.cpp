@@ -20,8 +20,9 @@
 #include "arrangements/arrange.h"
 #include "arrangements/arrange_stats.h"
 #include "arrangements/thread_count.h"
-#include "shared_meshes.h"
-#include "test_support.h"
+#include "support/run_program.h"
+#include "support/shared_meshes.h"
+#include "support/temp_dir.h"
 
 
 namespace {

@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-#include "shared_meshes.h"
+#include "support/shared_meshes.h"
 
 namespace {
 

@@ -13,19 +13,16 @@
 #include <set>
 
 #include "stages/3_classify_native.h"
+#include "support/test_scale.h"
 
 namespace {
 
+using tritri_test::test_scale;
 using arrangements::Location;
 using arrangements::PairIntersection;
 using arrangements::Tri;
 using arrangements::Vec3;
 using LocPair = std::pair<std::pair<int, int>, std::pair<int, int>>;  // ((kindA, idA), (kindB, idB))
-
-double test_scale() {
-  const char* s = std::getenv("TRITRI_TEST_SCALE");
-  return s ? std::atof(s) : 1.0;
-}
 
 LocPair locations_of(const tritri::IntersectionPoint& p) {
   using T = tritri::Type;

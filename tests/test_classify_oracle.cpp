@@ -1,11 +1,12 @@
 // Agreement of tritri::classify with an independent exact oracle, and across backends.
 //
-// The oracle (exact_oracle.h) rebuilds every reported point exactly from its type, checks
-// that it lies in the claimed open simplices of both triangles, and compares the point set
-// with the corners of CGAL's exact Triangle_3 / Triangle_3 intersection. The pairs come
-// mostly from the degenerate generators of pair_generators.h, each under a random exact
-// symmetry. Counts scale with TRITRI_TEST_SCALE (1,000,000 oracle pairs at 1.0). The
-// work runs on two threads (TRITRI_TEST_THREADS overrides); results do not depend on it.
+// The oracle (support/classify_oracle.h) rebuilds every reported point exactly from its
+// type, checks that it lies in the claimed open simplices of both triangles, and compares
+// the point set with the corners of CGAL's exact Triangle_3 / Triangle_3 intersection. The
+// pairs come mostly from the degenerate generators of support/pair_generators.h, each
+// under a random exact symmetry. Counts scale with TRITRI_TEST_SCALE (1,000,000 oracle
+// pairs at 1.0). The work runs on two threads (TRITRI_TEST_THREADS overrides); results do
+// not depend on it.
 #include <gtest/gtest.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -25,8 +26,9 @@
 
 #include <tritri/tritri.h>
 
-#include "exact_oracle.h"
-#include "pair_generators.h"
+#include "support/classify_oracle.h"
+#include "support/pair_generators.h"
+#include "support/test_scale.h"
 
 namespace {
 

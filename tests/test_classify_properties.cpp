@@ -6,8 +6,6 @@
 // Counts scale with TRITRI_TEST_SCALE.
 #include <gtest/gtest.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -19,7 +17,9 @@
 
 #include <tritri/tritri.h>
 
-#include "pair_generators.h"
+#include "support/classify_oracle.h"
+#include "support/pair_generators.h"
+#include "support/test_scale.h"
 
 namespace {
 
@@ -141,12 +141,9 @@ std::string mismatch(const char* what, const T& want, const T& got) {
 }
 
 bool has_degenerate_triangle(const Pair& p) {
-  using EP = CGAL::Epick::Point_3;  // exact predicates on double input
-  auto collinear = [](const tritri_test::Triangle& t) {
-    return CGAL::collinear(EP(t[0][0], t[0][1], t[0][2]), EP(t[1][0], t[1][1], t[1][2]),
-                           EP(t[2][0], t[2][1], t[2][2]));
-  };
-  return collinear(p.a) || collinear(p.b);
+  using tritri_test::is_degenerate;
+  using tritri_test::to_input;
+  return is_degenerate(to_input(p.a)) || is_degenerate(to_input(p.b));
 }
 
 TEST(ClassifyProperties, SwappingTrianglesMirrorsTypes) {

@@ -22,7 +22,8 @@
 
 #include <tritri/tritri.h>
 
-#include "pair_generators.h"
+#include "support/pair_generators.h"
+#include "support/test_scale.h"
 
 namespace {
 

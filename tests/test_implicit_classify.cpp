@@ -2,7 +2,8 @@
 //
 // classify<ImplicitKernel> on triangles whose vertices are implicit points equals
 // classify<CgalKernel<Simple_cartesian<Gmpq>>> on their exact coordinates (computed in GMP
-// rationals from the defining points, independently of the library; implicit_generators.h).
+// rationals from the defining points, independently of the library; support/exact_oracle.h,
+// soups from support/implicit_soups.h).
 //
 // The triangles are sub-triangles of a soup, as in a mesh arrangement: each soup triangle
 // keeps its vertices and the LPIs where edges cross the other triangles' planes, and a
@@ -21,9 +22,6 @@
 // explicit pairs; the sanitizer CI uses 0.1). TRITRI_TEST_SEED changes the seeds.
 #include <gtest/gtest.h>
 
-#include <CGAL/Gmpq.h>
-#include <CGAL/Simple_cartesian.h>
-
 #include <algorithm>
 #include <array>
 #include <iostream>
@@ -33,7 +31,11 @@
 
 #include <tritri/tritri.h>
 
-#include "implicit_generators.h"
+#include "support/exact_oracle.h"
+#include "support/implicit_recipes.h"
+#include "support/implicit_soups.h"
+#include "support/pair_generators.h"
+#include "support/test_scale.h"
 
 namespace {
 
@@ -42,14 +44,10 @@ using tritri::Result;
 using tritri_test::Rng;
 using tritri_test::Soup;
 
-using ExactKernel = CGAL::Simple_cartesian<CGAL::Gmpq>;
-using ExactPoint = ExactKernel::Point_3;
+using tritri_test::RationalKernel;
+using ExactPoint = RationalKernel::Point_3;
 
 constexpr int kMaxReports = 10;
-
-ExactPoint to_cgal(const tritri_test::QPoint& q) {
-  return ExactPoint(CGAL::Gmpq(q[0].get_mpq_t()), CGAL::Gmpq(q[1].get_mpq_t()), CGAL::Gmpq(q[2].get_mpq_t()));
-}
 
 // A vertex of a sub-triangle: a soup point and which of its representations is used.
 struct Vertex {
@@ -70,7 +68,7 @@ struct BuiltSoup {
 BuiltSoup build_soup(Rng& rng) {
   BuiltSoup b{tritri_test::random_soup(rng), {}, {}, 0};
   for (const auto& p : b.soup.points) {
-    b.exact.push_back(to_cgal(p.exact));
+    b.exact.push_back(tritri_test::to_cgal<RationalKernel>(p.exact));
     b.reps.emplace_back();
     for (const auto& r : p.reps) {
       const auto built = tritri_test::build(r, rng.percent(25));
@@ -101,7 +99,7 @@ class PairPicker {
       tritri_test::shuffle(ids.data(), 3, rng_);
       const bool distinct = ids[0] != ids[1] && ids[1] != ids[2] && ids[0] != ids[2];
       // Collinear and repeated vertices make degenerate triangles: keep a few of them.
-      const bool proper = distinct && !tritri_test::q_collinear(b_.soup.points[ids[0]].exact,
+      const bool proper = distinct && !tritri_test::collinear(b_.soup.points[ids[0]].exact,
                                                                 b_.soup.points[ids[1]].exact,
                                                                 b_.soup.points[ids[2]].exact);
       if (proper || attempt >= 20 || rng_.percent(3)) return {vertex(ids[0]), vertex(ids[1]), vertex(ids[2])};
@@ -171,7 +169,7 @@ std::string describe_tri(const BuiltSoup& b, const Tri& t) {
   std::string s;
   for (int i = 0; i < 3; ++i)
     s += "    " + std::to_string(i) + ": " + tritri_test::describe(b.soup.points[t[i].id].reps[t[i].rep]) +
-         "\n       exact " + tritri_test::q_string(b.soup.points[t[i].id].exact) + "\n";
+         "\n       exact " + tritri_test::to_string(b.soup.points[t[i].id].exact) + "\n";
   return s;
 }
 
@@ -195,7 +193,7 @@ TEST(ImplicitClassify, SubTrianglesOfASoupMatchTheExactRationalKernel) {
       auto P = [&](const Vertex& v) -> const ImplicitPoint& { return b.reps[v.id][v.rep]; };
       auto E = [&](const Vertex& v) -> const ExactPoint& { return b.exact[v.id]; };
       const Result got = tritri::classify<tritri::ImplicitKernel>(P(A[0]), P(A[1]), P(A[2]), P(B[0]), P(B[1]), P(B[2]));
-      const Result expected = tritri::classify<tritri::CgalKernel<ExactKernel>>(E(A[0]), E(A[1]), E(A[2]), E(B[0]),
+      const Result expected = tritri::classify<tritri::CgalKernel<RationalKernel>>(E(A[0]), E(A[1]), E(A[2]), E(B[0]),
                                                                                  E(B[1]), E(B[2]));
       coplanar += expected.coplanar;
       degenerate += expected.degenerate;

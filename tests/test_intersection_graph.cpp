@@ -4,15 +4,10 @@
 // their types. The set of intersection points must be the same, point for point.
 #include <gtest/gtest.h>
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/intersections.h>
-
 #include <tritri/tritri.h>
 
 #include <cctype>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -24,30 +19,20 @@
 #include "arrangements/load_triangle_soup.h"
 #include "support/mesh_generators.h"
 #include "stages/1_preprocess.h"
-#include "shared_meshes.h"
+#include "support/classify_oracle.h"
+#include "support/exact_oracle.h"
+#include "support/shared_meshes.h"
+#include "support/test_scale.h"
 
 namespace {
 
 using namespace arrangements;
-using EK = CGAL::Epeck;
+using tritri_test::exact;
+using EK = tritri_test::ExactKernel;
 using EP = EK::Point_3;
-using Exact = std::array<mpq_class, 3>;
+using Exact = tritri_test::Q3;
 
-Exact exact(const EP& p) { return {CGAL::exact(p.x()), CGAL::exact(p.y()), CGAL::exact(p.z())}; }
-Exact exact(const tritri::ImplicitPoint& p) {
-  const auto q = tritri::to_exact(p);
-  return {mpq_class(q[0].mpq()), mpq_class(q[1].mpq()), mpq_class(q[2].mpq())};
-}
-EP ep(const Vec3& v) { return EP(v[0], v[1], v[2]); }
-
-EP line_plane(const EP& p, const EP& q, const EP& a, const EP& b, const EP& c) {
-  auto r = CGAL::intersection(EK::Line_3(p, q), EK::Plane_3(a, b, c));
-  return *boost::get<EP>(&*r);
-}
-EP line_line(const EP& p, const EP& q, const EP& r, const EP& s) {
-  auto x = CGAL::intersection(EK::Line_3(p, q), EK::Line_3(r, s));
-  return *boost::get<EP>(&*x);
-}
+EP ep(const Vec3& v) { return tritri_test::to_cgal<EK>(v); }
 
 bool boxes_overlap(const std::vector<Vec3>& V, const Tri& a, const Tri& b) {
   for (int k = 0; k < 3; ++k) {
@@ -68,7 +53,7 @@ using ExactSegment = std::pair<Exact, Exact>;
 std::set<Exact> reference_points(const std::vector<Vec3>& V, const std::vector<Tri>& F, std::size_t& pairs,
                                  std::vector<std::set<ExactSegment>>& segments) {
   segments.assign(F.size(), {});
-  using GK = tritri::CgalKernel<CGAL::Simple_cartesian<CGAL::Gmpq>>;
+  using GK = tritri::CgalKernel<tritri_test::RationalKernel>;
   using GP = GK::Point;
   std::vector<GP> G;
   for (const Vec3& v : V) G.emplace_back(v[0], v[1], v[2]);
@@ -83,29 +68,18 @@ std::set<Exact> reference_points(const std::vector<Vec3>& V, const std::vector<T
       for (const auto& p : r.points) only_shared &= p.type == tritri::Type::VA_ON_VB;
       if (!r.intersects() || only_shared) continue;
       ++pairs;
+      const tritri_test::OTriangle ta = {ep(V[a[0]]), ep(V[a[1]]), ep(V[a[2]])};
+      const tritri_test::OTriangle tb = {ep(V[b[0]]), ep(V[b[1]]), ep(V[b[2]])};
       std::vector<Exact> pts;
       for (const auto& p : r.points) {
-        const int i0 = p.id0, i1 = p.id1;
-        auto A = [&](int k) { return ep(V[a[k % 3]]); };
-        auto B = [&](int k) { return ep(V[b[k % 3]]); };
-        EP x;
-        switch (p.type) {
-          case tritri::Type::VA_ON_VB:
-          case tritri::Type::VA_ON_EB:
-          case tritri::Type::VA_ON_TB: x = A(i0); break;
-          case tritri::Type::VB_ON_EA:
-          case tritri::Type::VB_ON_TA: x = B(i0); break;
-          case tritri::Type::EA_CROSS_EB: x = line_line(A(i0), A(i0 + 1), B(i1), B(i1 + 1)); break;
-          case tritri::Type::EA_CROSS_TB: x = line_plane(A(i0), A(i0 + 1), B(0), B(1), B(2)); break;
-          case tritri::Type::EB_CROSS_TA: x = line_plane(B(i0), B(i0 + 1), A(0), A(1), A(2)); break;
-        }
+        const EP x = tritri_test::locate(p, ta, tb);  // a vertex, or edge lines / planes meeting
         out.insert(exact(x));
         pts.push_back(exact(x));
       }
       // A segment lying along a triangle's own edge is not a constraint of that triangle.
       auto along_an_edge = [&](const Tri& t, const Exact& p, const Exact& q) {
         auto on = [&](const EP& a, const EP& b, const Exact& x) {
-          return EK::Segment_3(a, b).has_on(EP{EK::FT(x[0]), EK::FT(x[1]), EK::FT(x[2])});
+          return EK::Segment_3(a, b).has_on(tritri_test::to_cgal<EK>(x));
         };
         for (int k = 0; k < 3; ++k) {
           const EP a = ep(V[t[k]]), b = ep(V[t[(k + 1) % 3]]);
@@ -164,7 +138,7 @@ void expect_matches_reference(const TriangleSoup& input, const std::string& name
 
   // New points are pairwise distinct and distinct from every input vertex (exact dedup).
   std::set<Exact> vertices;
-  for (const Vec3& v : V) vertices.insert({mpq_class(v[0]), mpq_class(v[1]), mpq_class(v[2])});
+  for (const Vec3& v : V) vertices.insert(exact(v));
   std::set<Exact> fresh;
   for (std::size_t i = V.size(); i < g.points.size(); ++i) {
     const Exact e = exact(g.points[i]);
@@ -175,8 +149,7 @@ void expect_matches_reference(const TriangleSoup& input, const std::string& name
   for (std::size_t t = 0; t < F.size(); ++t) {
     const EK::Triangle_3 tri(ep(V[F[t][0]]), ep(V[F[t][1]]), ep(V[F[t][2]]));
     for (int x : g.triangle_points[t]) {
-      const auto e = exact(g.points[x]);
-      const EP p{EK::FT(e[0]), EK::FT(e[1]), EK::FT(e[2])};
+      const EP p = tritri_test::to_cgal<EK>(exact(g.points[x]));
       EXPECT_TRUE(tri.has_on(p)) << what << " triangle " << t;
       for (int k = 0; k < 3; ++k)
         EXPECT_FALSE(EK::Segment_3(tri.vertex(k), tri.vertex((k + 1) % 3)).has_on(p)) << what;
@@ -184,8 +157,7 @@ void expect_matches_reference(const TriangleSoup& input, const std::string& name
   }
   for (std::size_t e = 0; e < g.edges.size(); ++e)
     for (int x : g.edge_points[e]) {
-      const auto c = exact(g.points[x]);
-      const EP p{EK::FT(c[0]), EK::FT(c[1]), EK::FT(c[2])};
+      const EP p = tritri_test::to_cgal<EK>(exact(g.points[x]));
       const EP a = ep(V[g.edges[e][0]]), b = ep(V[g.edges[e][1]]);
       EXPECT_TRUE(EK::Segment_3(a, b).has_on(p) && p != a && p != b) << what << " edge " << e;
     }
@@ -238,9 +210,7 @@ TEST(IntersectionGraph, SmallSharedMeshes) {
 TEST(IntersectionGraph, EverySharedMeshLoadsAndClassifies) {
   const std::filesystem::path dir = tritri_test::shared_meshes_dir();
   TRITRI_REQUIRE_DATA(dir);
-  const char* scale_env = std::getenv("TRITRI_TEST_SCALE");
-  const double scale = scale_env ? std::atof(scale_env) : 1.0;
-  const std::size_t max_triangles = static_cast<std::size_t>(130000 * scale);
+  const std::size_t max_triangles = static_cast<std::size_t>(130000 * tritri_test::test_scale());
   int classified = 0, refused = 0, skipped = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
     if (!entry.is_regular_file()) continue;

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "test_support.h"
+#include "support/temp_dir.h"
 
 namespace {
 

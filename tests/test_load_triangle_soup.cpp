@@ -29,8 +29,8 @@
 #include <string>
 #include <vector>
 
-#include "shared_meshes.h"
-#include "test_support.h"
+#include "support/shared_meshes.h"
+#include "support/temp_dir.h"
 
 namespace {
 

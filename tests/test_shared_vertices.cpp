@@ -18,16 +18,13 @@
 
 #include <tritri/tritri.h>
 
+#include "support/test_scale.h"
+
 namespace {
 
+using tritri_test::test_scale;
 using P = tritri::DoubleKernel::Point;
 using Ids = std::array<int, 3>;
-
-double test_scale() {
-  const char* s = std::getenv("TRITRI_TEST_SCALE");
-  const double v = s ? std::atof(s) : 1.0;
-  return v > 0 ? v : 1.0;
-}
 
 struct Pair {
   std::array<P, 3> a, b;

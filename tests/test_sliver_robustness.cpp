@@ -9,8 +9,6 @@
 //      triangles lying in each non-degenerate input triangle tile it (exact areas).
 // Plus the two files of the issue that found the class, through the arrange CLI.
 // Case count scales with TRITRI_TEST_SCALE (default 1: 4,752 soups; 0.1: 475).
-#include <CGAL/Gmpq.h>
-#include <CGAL/Simple_cartesian.h>
 #include <CGAL/intersections.h>
 #include <gtest/gtest.h>
 
@@ -26,38 +24,23 @@
 
 #include "arrangements/arrange.h"
 #include "arrangements/check_arrangement.h"
-#include "test_support.h"
+#include "support/exact_oracle.h"
+#include "support/run_program.h"
+#include "support/temp_dir.h"
+#include "support/test_scale.h"
 
 namespace {
 
 using namespace arrangements;
-using EK = CGAL::Simple_cartesian<CGAL::Gmpq>;
+using tritri_test::area2;
+using tritri_test::projection_axis;
+using tritri_test::test_scale;
+using EK = tritri_test::RationalKernel;  // plain rationals: no tritri code in the oracle
 using EP = EK::Point_3;
 using ET = EK::Triangle_3;
 
-double test_scale() {
-  const char* s = std::getenv("TRITRI_TEST_SCALE");
-  const double v = s ? std::atof(s) : 1.0;
-  return v > 0 ? v : 1.0;
-}
-
-EP exact_point(const Vec3& v) { return EP(v[0], v[1], v[2]); }
-EP exact_point(const tritri::ImplicitPoint& p) {
-  const auto q = tritri::to_exact(p);
-  return EP(q[0], q[1], q[2]);
-}
-
-// Twice the signed area of (a, b, c) projected along `axis`.
-EK::FT area2(const EP& a, const EP& b, const EP& c, int axis) {
-  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-  return (b[i] - a[i]) * (c[j] - a[j]) - (b[j] - a[j]) * (c[i] - a[i]);
-}
-// An axis along which the triangle's projection is not degenerate; -1 if collinear.
-int projection_axis(const EP& a, const EP& b, const EP& c) {
-  for (int k = 0; k < 3; ++k)
-    if (area2(a, b, c, k) != 0) return k;
-  return -1;
-}
+EP exact_point(const Vec3& v) { return tritri_test::to_cgal<EK>(v); }
+EP exact_point(const tritri::ImplicitPoint& p) { return tritri_test::to_cgal<EK>(tritri_test::exact(p)); }
 
 // The oracle: "" if the output is a valid arrangement of `input`, else the first problem.
 std::string oracle_problem(const TriangleSoup& input, const OutputMesh& out) {

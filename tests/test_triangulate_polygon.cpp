@@ -1,6 +1,6 @@
 // Specification of triangulate_polygon (arrangements/triangulate_polygon.h), checked
 // exactly against an independent oracle (CGAL's exact-predicates kernel on the projection,
-// rational areas; nothing from the code under test):
+// rational areas from support/exact_oracle.h; nothing from the code under test):
 //   1. always n - 2 triangles of the polygon's own corners;
 //   2. when the projection along the normal's dominant axis is simple: the triangles
 //      keep the polygon's orientation, meet only in shared corners and edges, and their
@@ -9,9 +9,6 @@
 // Generators: star-shaped polygons with integer radii (many collinear corners), combs,
 // spirals, in the three axis planes and in tilted exact planes, scaled by 2^+-k and moved
 // far from the origin; self-touching and self-crossing polygons; non-planar ones.
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Gmpq.h>
 #include <CGAL/intersections.h>
 #include <gtest/gtest.h>
 
@@ -23,14 +20,16 @@
 #include <vector>
 
 #include "io/triangulate_polygon.h"
+#include "support/exact_oracle.h"
 
 namespace {
 
 using namespace arrangements;
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using K = tritri_test::InputKernel;
 using P2 = K::Point_2;
-using Q = CGAL::Gmpq;
-using EK = CGAL::Exact_predicates_exact_constructions_kernel;  // exact intersections
+using EK = tritri_test::ExactKernel;  // exact intersections
+using tritri_test::exact;
+using tritri_test::Q;
 
 struct Polygon3 {
   std::vector<Vec3> V;
@@ -40,9 +39,9 @@ struct Polygon3 {
 
 P2 project(const Vec3& p, int axis) { return P2(p[(axis + 1) % 3], p[(axis + 2) % 3]); }
 
-// Twice the signed area, exactly.
-Q area2(const P2& a, const P2& b, const P2& c) {
-  return (Q(b.x()) - Q(a.x())) * (Q(c.y()) - Q(a.y())) - (Q(b.y()) - Q(a.y())) * (Q(c.x()) - Q(a.x()));
+// Twice the signed area of the projection along the oracle's axis, exactly.
+Q area2(const Polygon3& poly, const Vec3& a, const Vec3& b, const Vec3& c) {
+  return tritri_test::area2(exact(a), exact(b), exact(c), poly.axis);
 }
 
 // Independent simplicity test: distinct positions, non-adjacent edges disjoint, adjacent
@@ -85,14 +84,15 @@ std::string problem(const Polygon3& poly, const std::vector<Tri>& tris) {
     return "";
   }
   Q polygon_area = 0;
-  for (std::size_t i = 0; i < n; ++i) polygon_area += area2(P2(0, 0), p[i], p[(i + 1) % n]);
+  for (std::size_t i = 0; i < n; ++i)
+    polygon_area += area2(poly, Vec3{0, 0, 0}, poly.V[poly.corners[i]], poly.V[poly.corners[(i + 1) % n]]);
   std::vector<EK::Triangle_2> T;
   Q sum = 0;
   for (const Tri& t : tris) {
     const P2 a = project(poly.V[t[0]], poly.axis), b = project(poly.V[t[1]], poly.axis),
              c = project(poly.V[t[2]], poly.axis);
-    const Q A = area2(a, b, c);
-    if (CGAL::sign(A) != CGAL::sign(polygon_area)) return "a triangle is degenerate or oriented against the polygon";
+    const Q A = area2(poly, poly.V[t[0]], poly.V[t[1]], poly.V[t[2]]);
+    if (sgn(A) != sgn(polygon_area)) return "a triangle is degenerate or oriented against the polygon";
     sum += A;
     auto e = [](const P2& q) { return EK::Point_2(q.x(), q.y()); };
     T.emplace_back(e(a), e(b), e(c));

@@ -24,7 +24,8 @@
 #include "support/mesh_generators.h"
 #include "arrangements/thread_count.h"
 #include "io/write_off.h"
-#include "test_support.h"
+#include "support/run_program.h"
+#include "support/temp_dir.h"
 
 
 namespace {
@@ -99,20 +100,9 @@ const char* kTopKeys[] = {"file",          "in_vertices",    "in_triangles", "in
 const char* kRunKeys[] = {"t_classify_s", "t_total_s", "out_vertices",   "out_triangles",
                           "euler",        "out_edges", "orient3d_calls", "orient2d_calls"};
 
-// A fresh folder for one test, removed afterwards.
+// Each test writes its files in a fresh folder (dir_), removed afterwards.
 class TritriCompare : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("tritri_compare_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
   std::string write(const std::string& name, const TriangleSoup& s) {
     const fs::path p = dir_ / name;
     write_off(p.string(), s.vertices, s.triangles);
@@ -172,7 +162,8 @@ class TritriCompare : public ::testing::Test {
     EXPECT_EQ(integer(raw_value(j, "native"), "euler"), integer(raw_value(j, "tritri"), "euler"));
   }
 
-  fs::path dir_;
+  const tritri_test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
 };
 
 TEST_F(TritriCompare, TwoSpheresAgree) {

@@ -36,7 +36,7 @@
 #include <string>
 #include <vector>
 
-#include "test_support.h"
+#include "support/temp_dir.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// tests/exact_oracle.h
+// tests/support/classify_oracle.h
 //
 // An independent exact check of one tritri::Result against its input pair:
 //
@@ -18,15 +18,16 @@
 //      overlap polygon ((0,1) for two points);
 //   6. `coplanar` is the exact coplanarity of the six vertices.
 //
-// Tests on input vertices use CGAL::Epick (exact predicates on doubles, fast exact
-// fallback); constructed points and CGAL's intersection use CGAL::Epeck (exact rationals
-// behind an interval filter). Nothing here calls tritri.
+// Tests on input vertices use InputKernel (CGAL::Epick: exact predicates on doubles, fast
+// exact fallback); constructed points and CGAL's intersection use ExactKernel (CGAL::Epeck:
+// exact rationals behind an interval filter); both from exact_oracle.h. Nothing here
+// calls tritri.
 //
-// check_classification() returns "" when everything holds, else the first violation.
+// check_classification() returns "" when everything holds, else the first violation;
+// locate() gives the exact point of a classified intersection point (also used by the
+// intersection-graph reference).
 #pragma once
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
 #include <algorithm>
@@ -38,6 +39,7 @@
 
 #include <tritri/result.h>
 
+#include "exact_oracle.h"
 #include "pair_generators.h"
 
 namespace tritri_test {
@@ -45,11 +47,10 @@ namespace tritri_test {
 // ---------------------------------------------------------------------------------------
 // Exact predicates on the input vertices (Epick: exact for double input).
 
-using InputKernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using IPoint = InputKernel::Point_3;
 using ITriangle = std::array<IPoint, 3>;
 
-inline IPoint to_input(const Point& p) { return IPoint(p[0], p[1], p[2]); }
+inline IPoint to_input(const Point& p) { return to_cgal<InputKernel>(p); }
 inline ITriangle to_input(const Triangle& t) { return {to_input(t[0]), to_input(t[1]), to_input(t[2])}; }
 
 inline bool is_degenerate(const ITriangle& t) { return CGAL::collinear(t[0], t[1], t[2]); }
@@ -62,19 +63,6 @@ inline CGAL::Orientation side(const ITriangle& t, const IPoint& x) {
 inline bool strictly_one_side(const ITriangle& t, const ITriangle& other) {
   const auto s0 = side(other, t[0]);
   return s0 != CGAL::COPLANAR && side(other, t[1]) == s0 && side(other, t[2]) == s0;
-}
-
-// x strictly inside the open segment (p, q), p != q.
-inline bool in_open_segment(const IPoint& x, const IPoint& p, const IPoint& q) {
-  return CGAL::collinear(p, q, x) && CGAL::collinear_are_strictly_ordered_along_line(p, x, q);
-}
-
-// x strictly inside the open face of the non-degenerate triangle t.
-inline bool in_open_face(const IPoint& x, const ITriangle& t) {
-  if (side(t, x) != CGAL::COPLANAR) return false;
-  for (int i = 0; i < 3; ++i)
-    if (CGAL::coplanar_orientation(t[i], t[(i + 1) % 3], t[(i + 2) % 3], x) != CGAL::POSITIVE) return false;
-  return true;
 }
 
 // The open segments (p, q) and (r, s) cross at exactly one point, inside both.
@@ -155,18 +143,17 @@ inline std::string check_claim(const tritri::IntersectionPoint& p, const ITriang
 // ---------------------------------------------------------------------------------------
 // Exact points (Epeck) and CGAL's answer.
 
-using OracleKernel = CGAL::Exact_predicates_exact_constructions_kernel;
-using OPoint = OracleKernel::Point_3;
+using OPoint = ExactKernel::Point_3;
 using OTriangle = std::array<OPoint, 3>;
 
-inline OPoint to_oracle(const Point& p) { return OPoint(p[0], p[1], p[2]); }
+inline OPoint to_oracle(const Point& p) { return to_cgal<ExactKernel>(p); }
 inline OTriangle to_oracle(const Triangle& t) { return {to_oracle(t[0]), to_oracle(t[1]), to_oracle(t[2])}; }
 
 // The exact location of a point whose claim holds (check_claim): a vertex, or the meeting
 // point of the two edge lines, or of the edge line and the other triangle's plane.
 inline OPoint locate(const tritri::IntersectionPoint& p, const OTriangle& a, const OTriangle& b) {
   using tritri::Type;
-  auto line = [](const OTriangle& t, int e) { return OracleKernel::Line_3(t[e], t[(e + 1) % 3]); };
+  auto line = [](const OTriangle& t, int e) { return ExactKernel::Line_3(t[e], t[(e + 1) % 3]); };
   switch (p.type) {
     case Type::VA_ON_VB:
     case Type::VA_ON_EB:
@@ -181,7 +168,7 @@ inline OPoint locate(const tritri::IntersectionPoint& p, const OTriangle& a, con
       const bool a_edge = p.type == Type::EA_CROSS_TB;
       const OTriangle& e = a_edge ? a : b;
       const OTriangle& f = a_edge ? b : a;
-      const auto x = CGAL::intersection(line(e, p.id0), OracleKernel::Plane_3(f[0], f[1], f[2]));
+      const auto x = CGAL::intersection(line(e, p.id0), ExactKernel::Plane_3(f[0], f[1], f[2]));
       return *boost::get<OPoint>(&*x);
     }
   }
@@ -208,7 +195,7 @@ inline std::vector<OPoint> corners(const std::vector<OPoint>& pts) {
 
 // The corners of A ∩ B according to CGAL's exact intersection (non-degenerate triangles).
 inline std::vector<OPoint> cgal_corners(const OTriangle& a, const OTriangle& b) {
-  using K = OracleKernel;
+  using K = ExactKernel;
   const auto x = CGAL::intersection(K::Triangle_3(a[0], a[1], a[2]), K::Triangle_3(b[0], b[1], b[2]));
   std::vector<OPoint> pts;
   if (!x) return pts;
@@ -227,12 +214,7 @@ inline std::vector<OPoint> cgal_corners(const OTriangle& a, const OTriangle& b) 
 // ---------------------------------------------------------------------------------------
 // The check.
 
-inline std::string point_string(const OPoint& p) {
-  const auto e = CGAL::exact(p);  // rational coordinates, printed exactly
-  std::ostringstream os;
-  os << "(" << e.x() << ", " << e.y() << ", " << e.z() << ")";
-  return os.str();
-}
+inline std::string point_string(const OPoint& p) { return to_string(exact(p)); }
 
 inline std::string points_string(const std::vector<OPoint>& pts) {
   std::string s = "{";
@@ -279,7 +261,7 @@ inline std::string check_form(const tritri::Result& r) {
 // points; for a coplanar polygon, the pairs (i, j) with every other corner strictly on one
 // side of line ij (n: the common plane's normal).
 inline std::vector<tritri::Segment> expected_segments(const std::vector<OPoint>& x, bool coplanar,
-                                                      const OracleKernel::Vector_3& n) {
+                                                      const ExactKernel::Vector_3& n) {
   std::vector<tritri::Segment> segs;
   if (x.size() == 2) segs.push_back({0, 1});
   if (!coplanar || x.size() < 3) return segs;

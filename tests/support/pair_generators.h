@@ -1,4 +1,4 @@
-// tests/pair_generators.h
+// tests/support/pair_generators.h
 //
 // Generators of triangle pairs for the classify tests, weighted towards the degenerate
 // configurations that break classifiers: small integer grids, coplanar pairs, shared
@@ -10,7 +10,7 @@
 // are reproducible on every platform.
 //
 // Also here: the exact symmetries used by the tests (axis permutations, sign flips, vertex
-// rotation and reversal, swapping A and B), TRITRI_TEST_SCALE handling, and hex printing.
+// rotation and reversal, swapping A and B) and hex printing.
 #pragma once
 
 #include <algorithm>
@@ -18,7 +18,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -31,22 +30,6 @@ struct Pair {
   Triangle a;
   Triangle b;
 };
-
-// ---------------------------------------------------------------------------------------
-// Test scale (TRITRI_TEST_SCALE, default 1.0; CI uses 0.1 under sanitizers).
-
-inline double test_scale() {
-  const char* s = std::getenv("TRITRI_TEST_SCALE");
-  if (s == nullptr || *s == '\0') return 1.0;
-  char* end = nullptr;
-  const double v = std::strtod(s, &end);
-  return (end != s && v > 0 && std::isfinite(v)) ? v : 1.0;
-}
-
-// n scaled by TRITRI_TEST_SCALE, at least 1.
-inline long long scaled_count(long long n) {
-  return std::max<long long>(1, std::llround(static_cast<double>(n) * test_scale()));
-}
 
 // ---------------------------------------------------------------------------------------
 // Printing with hex floats, so that a failing pair can be pasted back exactly.

@@ -1,3 +1,5 @@
+// tests/support/shared_meshes.h
+//
 // Where tests find data that is not part of the project:
 //   shared_meshes_dir()  the shared mesh collection (../shared/meshes beside the checkout;
 //                        override with the environment variable TRITRI_MESHES_DIR)

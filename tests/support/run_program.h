@@ -1,5 +1,8 @@
-// Small helpers shared by the test programs: a temporary folder per test, running a
-// command line with its output captured, and the bytes of binary values.
+// tests/support/run_program.h
+//
+// Running the project's programs from a test: run_command (a shell command line, stdout
+// captured) and spawn (a program with exact arguments, no shell, stdout and stderr
+// captured, with how it ended: exit code or signal).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -8,13 +11,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <array>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <set>
 #include <iterator>
 #include <string>
 #include <vector>
@@ -22,38 +22,6 @@
 extern char** environ;  // the process environment, passed on to spawned programs
 
 namespace tritri_test {
-
-// A fresh folder for the files one test writes, removed afterwards.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = std::filesystem::temp_directory_path() /
-           ("arrangements_test_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
-            std::to_string(::getpid()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  ~TempDir() { std::filesystem::remove_all(dir_); }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  std::filesystem::path path() const { return dir_; }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::string write(const std::string& name, const std::string& bytes) const {
-    std::ofstream(path(name), std::ios::binary) << bytes;
-    return path(name);
-  }
-  // The names of the entries of the folder, sorted.
-  std::set<std::string> entries() const {
-    std::set<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(dir_)) names.insert(e.path().filename().string());
-    return names;
-  }
-
- private:
-  std::filesystem::path dir_;
-};
 
 struct CommandRun {
   int status = -1;  // exit status, -1 if it did not exit normally
@@ -71,16 +39,6 @@ inline CommandRun run_command(const std::string& command) {
   const int s = pclose(p);
   r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
   return r;
-}
-
-// The bytes of a value, little endian (this machine's order) or reversed to big endian:
-// for hand-built binary mesh files.
-template <class T>
-std::string bytes_of(T value, bool big_endian = false) {
-  std::string s(sizeof(T), '\0');
-  std::memcpy(s.data(), &value, sizeof(T));
-  if (big_endian) std::reverse(s.begin(), s.end());
-  return s;
 }
 
 // How a spawned program ended.

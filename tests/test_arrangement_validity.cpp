@@ -1,0 +1,141 @@
+// tests/test_arrangement_validity.cpp
+//
+// The arrangement's output triangles meet only in shared vertices and shared edges:
+// check_arrangement (what `arrange --check` runs) on the generated scenes and on every
+// shared mesh up to a size limit, and an independent all-pairs classification of the
+// output (support/triangulation_checks.h) on small scenes; that check refuses bad meshes.
+// Both classifiers. Sizes scale with TRITRI_TEST_SCALE (default 1; sanitizer runs use 0.1).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "arrangements/check_arrangement.h"
+#include "arrangements/input_error.h"
+#include "arrangements/load_triangle_soup.h"
+#include "support/arrangement_scenes.h"
+#include "support/test_scale.h"
+#include "support/triangulation_checks.h"
+#include "support/shared_meshes.h"
+
+namespace {
+
+using namespace tritri_test::arrangement;
+using tritri_test::test_scale;
+namespace fs = std::filesystem;
+
+TEST(Arrangement, GeneratedScenesPassCheckArrangement) {
+  for (const auto& [name, soup] : generated_scenes()) {
+    const ArrangeResult native = run_arrange(soup, Classifier::Native);
+    const ArrangeResult tritri = run_arrange(soup, Classifier::Tritri);
+    for (const ArrangeResult* r : {&native, &tritri}) {
+      expect_stats_match_mesh(*r, name);
+      if (r == &tritri && same_output(tritri.mesh, native.mesh)) continue;  // checked already
+      const ArrangementCheck check = check_arrangement(r->mesh);
+      EXPECT_TRUE(check.ok()) << name << " (" << r->stats.classifier << "): " << check.violations << " violations, "
+                              << check.degenerate_triangles << " degenerate; "
+                              << (check.examples.empty() ? "" : check.examples.front());
+      EXPECT_GT(check.pairs_checked, 0u) << name;
+    }
+  }
+}
+
+TEST(Arrangement, SmallScenesPassIndependentAllPairsCheck) {
+  for (const auto& [name, soup] :
+       std::vector<std::pair<std::string, TriangleSoup>>{{"two triangles crossing", two_triangles_crossing()},
+                                                         {"triangle pierced", triangle_pierced()},
+                                                         {"cube through cube", cube_through_cube()},
+                                                         {"overlapping squares", overlapping_squares()},
+                                                         {"overlapping triangles", overlapping_triangles(false)},
+                                                         {"star of David", kIntegerStar.soup()},
+                                                         {"rational star", kRationalStar.soup()},
+                                                         {"grids sharing cells", grids_sharing_cells()},
+                                                         {"rotated grids", rotated_copies(grid(2, 1.0, 0.0), 3)},
+                                                         {"small spheres", concatenate(uv_sphere({0, 0, 0}, 1, 4, 6),
+                                                                                       uv_sphere({0.5, 0.2, 0.1}, 0.9, 5, 5))}})
+    for (Classifier c : kClassifiers) {
+      const ArrangeResult r = run_arrange(soup, c);
+      expect_no_problems(all_pairs_problems(r.mesh.vertices, r.mesh.triangles), name + " (" + name_of(c) + ")");
+    }
+}
+
+// The checker itself must be able to fail: an overlapping pair, a crossing pair and two
+// vertices at one position are refused.
+TEST(Arrangement, IndependentCheckRefusesBadMeshes) {
+  auto P = [](double x, double y, double z) { return ImplicitPoint::explicit_point(x, y, z); };
+  // Two coplanar triangles overlapping (sharing an edge, folded onto the same side).
+  const std::vector<ImplicitPoint> pts = {P(0, 0, 0), P(4, 0, 0), P(0, 4, 0), P(1, 1, 0), P(0, 0, 0)};
+  EXPECT_TRUE(mentions(all_pairs_problems(pts, {{0, 1, 2}, {0, 1, 3}}), "improperly"));
+  // Same position under two ids.
+  EXPECT_TRUE(mentions(all_pairs_problems(pts, {{0, 1, 2}, {4, 2, 1}}), "two vertices"));
+  // A proper pair sharing an edge passes.
+  std::vector<ImplicitPoint> fine = pts;
+  fine.push_back(P(2, -2, 0));
+  EXPECT_TRUE(all_pairs_problems(fine, {{0, 1, 2}, {1, 0, 5}}).empty());
+  OutputMesh m;
+  m.vertices = pts;
+  m.triangles = {{0, 1, 2}, {0, 1, 3}};
+  EXPECT_FALSE(check_arrangement(m).ok());
+}
+
+// Every shared mesh up to a size limit, both classifiers.
+TEST(Arrangement, SharedMeshesPassCheckArrangement) {
+  const fs::path dir = tritri_test::shared_meshes_dir();
+  TRITRI_REQUIRE_DATA(dir);
+  const std::size_t max_triangles = static_cast<std::size_t>(20000 * test_scale());
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;
+    std::string ext = entry.path().extension().string();
+    for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext == ".obj" || ext == ".off" || ext == ".stl" || ext == ".ply") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  // Below scale 1, every n-th file only (n about 1 / scale), so sanitizer runs stay short.
+  const std::size_t every = test_scale() < 1 ? static_cast<std::size_t>(std::lround(1 / test_scale())) : 1;
+  std::size_t eligible = 0;
+  int arranged = 0, refused = 0, skipped = 0, skipped_check = 0;
+  for (const fs::path& f : files) {
+    TriangleSoup input;
+    try {
+      input = load_triangle_soup(f.string());
+    } catch (const InputError&) {
+      ++refused;  // bad files of the collection: test_load_triangle_soup's business
+      continue;
+    }
+    if (input.triangles.size() > max_triangles || eligible++ % every != 0) {
+      ++skipped;
+      continue;
+    }
+    // Both classifiers; the (costly) check runs once when they give the same output.
+    std::vector<ArrangeResult> results;
+    for (Classifier c : kClassifiers) {
+      results.push_back(run_arrange(input, c));  // valid input is never refused
+    }
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      const ArrangeResult& r = results[i];
+      expect_stats_match_mesh(r, f.string());
+      if (i > 0 && same_output(r.mesh, results[0].mesh)) continue;
+      if (r.mesh.triangles.size() > max_triangles) {  // the check costs by output size
+        ++skipped_check;
+        continue;
+      }
+      const ArrangementCheck check = check_arrangement(r.mesh);
+      EXPECT_TRUE(check.ok()) << f << " (" << r.stats.classifier << "): " << check.violations << " violations, "
+                              << check.degenerate_triangles << " degenerate; "
+                              << (check.examples.empty() ? "" : check.examples.front());
+    }
+    ++arranged;
+  }
+  EXPECT_GT(arranged, 0);
+  std::printf("arranged %d shared meshes (%d outputs too large to check), refused %d, skipped (size or sampling) %d\n",
+              arranged, skipped_check, refused, skipped);
+}
+
+}  // namespace
