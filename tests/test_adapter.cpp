@@ -1,4 +1,4 @@
-// The tritri adapter (arrangements/classify_tritri.h): every tritri point type converted
+// The tritri adapter (arrangements/src/stages/3_classify_tritri.h): every tritri point type converted
 // into the PairIntersection record. Hand-made pairs with dyadic coordinates check each
 // record point (existing vertex or LPI key, locations) and each segment against points
 // derived by hand; every LPI key is rebuilt with ImplicitPoint::try_lpi (negative plane ids

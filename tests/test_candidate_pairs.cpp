@@ -1,4 +1,4 @@
-// Specification of candidate_pairs (arrangements/candidate_pairs.h):
+// Specification of candidate_pairs (arrangements/src/stages/2_candidate_pairs.h):
 // - exactly the pairs i < j whose closed bounding boxes overlap, touching boxes included,
 //   boxes one ulp apart excluded; pairs that share vertices included;
 // - sorted and unique, and the same for every thread count;

@@ -1,4 +1,4 @@
-// The native pair classifier (arrangements/classify_native.h) against tritri::classify,
+// The native pair classifier (arrangements/src/stages/3_classify_native.h) against tritri::classify,
 // an independent implementation: on every pair, the points (as pairs of locations in the
 // two triangles), the segments and the coplanar flag must be equal, and a pair whose
 // only contact is shared mesh vertices must be dropped.

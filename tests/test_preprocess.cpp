@@ -1,4 +1,4 @@
-// Specification of preprocess (arrangements/preprocess.h):
+// Specification of preprocess (arrangements/src/stages/1_preprocess.h):
 // - vertices with identical coordinates (also -0.0 / 0.0) become one, in first-use order;
 //   coordinates one ulp apart stay apart; unreferenced vertices are dropped;
 // - triangles with repeated positions or exactly collinear corners are removed (also when

@@ -1,4 +1,4 @@
-// Specification of triangulate_polygon (arrangements/triangulate_polygon.h), checked
+// Specification of triangulate_polygon (arrangements/src/io/triangulate_polygon.h), checked
 // exactly against an independent oracle (CGAL's exact-predicates kernel on the projection,
 // rational areas from support/exact_oracle.h; nothing from the code under test):
 //   1. always n - 2 triangles of the polygon's own corners;

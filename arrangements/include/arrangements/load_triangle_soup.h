@@ -1,6 +1,6 @@
 // arrangements/load_triangle_soup.h
 //
-// Stage 1 of the pipeline: read a polygon soup from a mesh file into a TriangleSoup.
+// Input to the pipeline (before stage 1): read a polygon soup from a mesh file into a TriangleSoup.
 //
 // TriangleSoup load_triangle_soup(path, label = 0)
 //   path   an .obj, .off, .stl or .ply file (the extension decides the format, in any case)
@@ -9,7 +9,7 @@
 //   vertices    #V the file's vertices in file order, unmerged (STL: one vertex per
 //               distinct corner position, below)
 //   triangles   #F the faces, polygons triangulated (below), in file order
-//   labels      #F all 0, label_sets = {{label}}
+//   label_set   #F all 0, label_sets = {{label}}
 //   source      #F 0, 1, ..., #F-1: the triangle's index in the file's triangle list
 //   polygon     #F or empty: for the triangles of a polygon face split without overlap,
 //               the source index of the face's first triangle; -1 for the others (empty
@@ -19,7 +19,7 @@
 // TriangleSoup load_triangle_soups(paths)
 //   File i is loaded with label i; the soups are concatenated in order (vertex indices are
 //   offset; `source` and `polygon` continue across files, so they index the concatenated
-//   triangle lists); label_sets = {{0}, {1}, ...}, labels[t] = the index of t's file. No paths:
+//   triangle lists); label_sets = {{0}, {1}, ...}, label_set[t] = the index of t's file. No paths:
 //   an empty soup.
 //
 // Polygons: a face with corners c0 c1 ... c(n-1), n > 3, becomes the n - 2 triangles of

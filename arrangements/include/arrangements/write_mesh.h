@@ -1,7 +1,7 @@
 // arrangements/write_mesh.h
 //
-// Stage 7 of the pipeline: write the arrangement (OutputMesh) to a mesh file, with its
-// provenance.
+// Output of the pipeline (after stage 5): write the arrangement (OutputMesh) to a mesh
+// file, with its provenance.
 //
 // write_mesh(path, mesh, options = {})
 //   path     where to write; the extension (any case) chooses the format: .obj, .off, .ply

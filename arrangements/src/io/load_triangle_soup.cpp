@@ -1,4 +1,4 @@
-// Stage 1: mesh file -> TriangleSoup (see load_triangle_soup.h): the file is read once, as
+// Load (before stage 1): mesh file -> TriangleSoup (see load_triangle_soup.h): the file is read once, as
 // a stream, by the reader of its format (read_obj.cpp, read_off.cpp, read_stl.cpp,
 // read_ply.cpp), which validates it and fills a SoupBuilder in the same pass.
 #include "arrangements/load_triangle_soup.h"

@@ -1,4 +1,4 @@
-// Stage 7: OutputMesh -> OBJ / OFF / PLY file and provenance (see write_mesh.h).
+// Output: OutputMesh -> OBJ / OFF / PLY file and provenance (see write_mesh.h).
 #include "arrangements/write_mesh.h"
 
 #include <gmp.h>

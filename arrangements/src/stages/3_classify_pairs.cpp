@@ -1,7 +1,7 @@
 #include "stages/3_classify_pairs.h"
 
-#include <tbb/parallel_for.h>
 #include <tritri/counting_kernel.h>
+#include <tritri/detail/ordered_parallel.h>
 #include <tritri/double_kernel.h>
 #include <tritri/shared_vertices.h>
 
@@ -42,28 +42,26 @@ void classify_range(const K& k, const std::vector<Vec3>& V, const std::vector<Tr
 std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
                                              const std::vector<std::pair<int, int>>& pairs,
                                              Classifier classifier, tritri::PredicateCounts* counts) {
-  // Fixed chunks, concatenated in order: the output does not depend on scheduling.
+  // Fixed chunks, concatenated in order (the loop tritri's batch API uses too): the
+  // output does not depend on scheduling.
   constexpr std::size_t chunk = 2048;
-  const std::size_t chunks = (pairs.size() + chunk - 1) / chunk;
-  std::vector<std::vector<PairIntersection>> found(chunks);
   // Counting: one PredicateCounts per chunk (one worker at a time), summed at the end.
-  std::vector<tritri::PredicateCounts> chunk_counts(counts ? chunks : 0);
-  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
-    const std::size_t begin = c * chunk, end = std::min(pairs.size(), (c + 1) * chunk);
-    if (counts)
-      classify_range(tritri::CountingKernel<tritri::DoubleKernel>(chunk_counts[c]), V, F, pairs, begin, end,
-                     classifier, found[c]);
-    else
-      classify_range(tritri::DoubleKernel{}, V, F, pairs, begin, end, classifier, found[c]);
-  });
+  std::vector<tritri::PredicateCounts> chunk_counts(counts ? (pairs.size() + chunk - 1) / chunk : 0);
+  std::vector<PairIntersection> all = tritri::detail::collect_in_order<PairIntersection>(
+      pairs.size(), chunk,
+      [&](std::size_t c, std::size_t begin, std::size_t end, std::vector<PairIntersection>& found) {
+        if (counts)
+          classify_range(tritri::CountingKernel<tritri::DoubleKernel>(chunk_counts[c]), V, F, pairs, begin, end,
+                         classifier, found);
+        else
+          classify_range(tritri::DoubleKernel{}, V, F, pairs, begin, end, classifier, found);
+      });
   for (const auto& n : chunk_counts) {
     counts->orient3d += n.orient3d;
     counts->orient2d += n.orient2d;
     counts->equal += n.equal;
     counts->less += n.less;
   }
-  std::vector<PairIntersection> all;
-  for (auto& f : found) all.insert(all.end(), f.begin(), f.end());
   return all;
 }
 

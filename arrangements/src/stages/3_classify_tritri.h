@@ -2,7 +2,7 @@
 //
 // classify_pair_tritri: the drop-in classifier: tritri::classify on the pair (double
 // backend), converted by an adapter into the same PairIntersection record the native
-// classifier fills (docs/ARCHITECTURE.md, stage [5a]):
+// classifier fills (docs/ARCHITECTURE.md, stage [3]):
 //   VA_ON_VB                     the shared vertex (nothing new);
 //   VA_ON_EB, VB_ON_EA, V*_ON_T* the existing vertex, recorded on that edge / face;
 //   EA_CROSS_TB / EB_CROSS_TA    a new LPI: the edge's line with the other triangle's plane;

@@ -18,7 +18,7 @@
 // segment_supports: for every distinct constraint segment (a, b), for each pair that
 // reports it (distinct records only), two planes whose
 // intersection is the segment's line, each as three vertex ids (an id below 0 stands for
-// the auxiliary point of triangle -1 - id, see pair_intersection.h); triangulation builds
+// the auxiliary point of triangle -1 - id, see 3_pair_intersection.h); triangulation builds
 // the TPI where two constraints cross from the triangle's plane and, for each constraint,
 // one of its planes that is transverse to that triangle. For a non-coplanar pair they are
 // the two triangles' planes; for a coplanar pair, the common plane and the plane through
