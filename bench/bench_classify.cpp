@@ -199,8 +199,8 @@ void BM_classify(benchmark::State& state, const PairSet* set) {
   std::vector<std::array<Q, 6>> pairs;
   pairs.reserve(set->pairs.size());
   for (const Pair& p : set->pairs)
-    pairs.push_back({to_point<K>(p[0]), to_point<K>(p[1]), to_point<K>(p[2]), to_point<K>(p[3]),
-                     to_point<K>(p[4]), to_point<K>(p[5])});
+    pairs.push_back({to_point<K>(p[0]), to_point<K>(p[1]), to_point<K>(p[2]), to_point<K>(p[3]), to_point<K>(p[4]),
+                     to_point<K>(p[5])});
   const std::size_t mask = pairs.size() - 1;
   const K k{};
 

@@ -37,14 +37,18 @@ constexpr int kCases = 4096;
 ImplicitPoint E(const Point& p) { return ImplicitPoint::explicit_point(p); }
 // The constructions below are defined by construction (or with probability one for random
 // doubles); lpi / tpi throw otherwise.
-ImplicitPoint lpi(const Point& p, const Point& q, const Triple& t) { return ImplicitPoint::lpi(p, q, t[0], t[1], t[2]); }
+ImplicitPoint lpi(const Point& p, const Point& q, const Triple& t) {
+  return ImplicitPoint::lpi(p, q, t[0], t[1], t[2]);
+}
 ImplicitPoint tpi(const Triple& a, const Triple& b, const Triple& c) {
   return ImplicitPoint::tpi(a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]);
 }
 
 Point random_point(Rng& rng) { return {rng.symmetric_unit(), rng.symmetric_unit(), rng.symmetric_unit()}; }
 Triple random_triple(Rng& rng) { return {random_point(rng), random_point(rng), random_point(rng)}; }
-Point grid_point(Rng& rng) { return {double(rng.uniform(-8, 8)), double(rng.uniform(-8, 8)), double(rng.uniform(-8, 8))}; }
+Point grid_point(Rng& rng) {
+  return {double(rng.uniform(-8, 8)), double(rng.uniform(-8, 8)), double(rng.uniform(-8, 8))};
+}
 
 ImplicitPoint random_lpi(Rng& rng) { return lpi(random_point(rng), random_point(rng), random_triple(rng)); }
 ImplicitPoint random_tpi(Rng& rng) { return tpi(random_triple(rng), random_triple(rng), random_triple(rng)); }

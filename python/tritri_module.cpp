@@ -137,8 +137,7 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
     using LabelVector = Eigen::Map<const Eigen::Matrix<std::int64_t, Eigen::Dynamic, 1>>;
     std::optional<LabelVector> Le;
     if (labels) Le.emplace(labels->data(), static_cast<Eigen::Index>(labels->shape(0)));
-    out = arrangements::detail::arrange_eigen(as_eigen(V), as_eigen(F), options, Le ? &*Le : nullptr,
-                                              "tritri.arrange");
+    out = arrangements::detail::arrange_eigen(as_eigen(V), as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange");
   }
 
   const auto nv = static_cast<std::size_t>(out.V.rows()), nf = static_cast<std::size_t>(out.F.rows());
@@ -207,8 +206,7 @@ NB_MODULE(_tritri, m) {
     }
   });
 
-  nb::class_<tritri::Result>(m, "Result",
-                             "The exact classification of the intersection of two triangles A and B.")
+  nb::class_<tritri::Result>(m, "Result", "The exact classification of the intersection of two triangles A and B.")
       .def_prop_ro(
           "points",
           [](const tritri::Result& r) {
@@ -230,7 +228,8 @@ NB_MODULE(_tritri, m) {
       .def_ro("degenerate", &tritri::Result::degenerate,
               "A triangle is degenerate and the pair was not classified (points is empty).")
       .def_prop_ro("intersects", &tritri::Result::intersects, "At least one point.")
-      .def("__eq__", [](const tritri::Result& a, const tritri::Result& b) { return a == b; }, nb::is_operator())
+      .def(
+          "__eq__", [](const tritri::Result& a, const tritri::Result& b) { return a == b; }, nb::is_operator())
       .def("__repr__", [](const tritri::Result& r) {
         std::ostringstream s;
         s << r;

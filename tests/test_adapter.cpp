@@ -136,7 +136,7 @@ struct Case {
   std::array<Vec3, 3> a, b;
   std::vector<Type> types;  // tritri's point types, in its order (checks the case is what it says)
   bool coplanar = false;
-  std::vector<ExpectedPoint> points;  // empty: the pair must be dropped
+  std::vector<ExpectedPoint> points;          // empty: the pair must be dropped
   std::vector<std::pair<int, int>> segments;  // indices into points
 };
 
@@ -148,13 +148,20 @@ Exact q(mpq_class x, mpq_class y, mpq_class z) { return {x, y, z}; }
 
 Type mirror(Type t) {
   switch (t) {
-    case Type::VA_ON_EB: return Type::VB_ON_EA;
-    case Type::VB_ON_EA: return Type::VA_ON_EB;
-    case Type::VA_ON_TB: return Type::VB_ON_TA;
-    case Type::VB_ON_TA: return Type::VA_ON_TB;
-    case Type::EA_CROSS_TB: return Type::EB_CROSS_TA;
-    case Type::EB_CROSS_TA: return Type::EA_CROSS_TB;
-    default: return t;
+    case Type::VA_ON_EB:
+      return Type::VB_ON_EA;
+    case Type::VB_ON_EA:
+      return Type::VA_ON_EB;
+    case Type::VA_ON_TB:
+      return Type::VB_ON_TA;
+    case Type::VB_ON_TA:
+      return Type::VA_ON_TB;
+    case Type::EA_CROSS_TB:
+      return Type::EB_CROSS_TA;
+    case Type::EB_CROSS_TA:
+      return Type::EA_CROSS_TB;
+    default:
+      return t;
   }
 }
 
@@ -208,8 +215,10 @@ void check_case(const Case& c) {
   want.coplanar = c.coplanar;
   for (const auto& p : c.points) {
     int vertex = -1;
-    if (p.in_a.kind == Location::Vertex) vertex = a[p.in_a.id];
-    else if (p.in_b.kind == Location::Vertex) vertex = b[p.in_b.id];
+    if (p.in_a.kind == Location::Vertex)
+      vertex = a[p.in_a.id];
+    else if (p.in_b.kind == Location::Vertex)
+      vertex = b[p.in_b.id];
     if (vertex >= 0) {
       ASSERT_EQ(exact(Vx[vertex]), p.x) << "expected point is not that vertex";
     }
@@ -252,17 +261,32 @@ const std::array<Vec3, 3> kFloor = {Vec3{0, 0, 0}, Vec3{2, 0, 0}, Vec3{0, 2, 0}}
 
 TEST(Adapter, SharedVertexOrEdgeAloneIsNoIntersection) {
   // Non-coplanar, one shared vertex.
-  check_all_variants({"shared vertex", kFloor, {Vec3{0, 0, 0}, Vec3{0, 0, 1}, Vec3{-1, -1, 1}},
-                      {Type::VA_ON_VB}, false, {}, {}});
+  check_all_variants(
+      {"shared vertex", kFloor, {Vec3{0, 0, 0}, Vec3{0, 0, 1}, Vec3{-1, -1, 1}}, {Type::VA_ON_VB}, false, {}, {}});
   // Non-coplanar, one shared edge (two VA_ON_VB points).
-  check_all_variants({"shared edge", kFloor, {Vec3{0, 0, 0}, Vec3{2, 0, 0}, Vec3{1, 0, 1}},
-                      {Type::VA_ON_VB, Type::VA_ON_VB}, false, {}, {}});
+  check_all_variants({"shared edge",
+                      kFloor,
+                      {Vec3{0, 0, 0}, Vec3{2, 0, 0}, Vec3{1, 0, 1}},
+                      {Type::VA_ON_VB, Type::VA_ON_VB},
+                      false,
+                      {},
+                      {}});
   // Coplanar neighbours across an edge (a flat region).
-  check_all_variants({"coplanar shared edge", kFloor, {Vec3{2, 0, 0}, Vec3{2, 2, 0}, Vec3{0, 2, 0}},
-                      {Type::VA_ON_VB, Type::VA_ON_VB}, true, {}, {}});
+  check_all_variants({"coplanar shared edge",
+                      kFloor,
+                      {Vec3{2, 0, 0}, Vec3{2, 2, 0}, Vec3{0, 2, 0}},
+                      {Type::VA_ON_VB, Type::VA_ON_VB},
+                      true,
+                      {},
+                      {}});
   // Coplanar, touching at one shared vertex.
-  check_all_variants({"coplanar shared vertex", kFloor, {Vec3{0, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, -1, 0}},
-                      {Type::VA_ON_VB}, true, {}, {}});
+  check_all_variants({"coplanar shared vertex",
+                      kFloor,
+                      {Vec3{0, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, -1, 0}},
+                      {Type::VA_ON_VB},
+                      true,
+                      {},
+                      {}});
 }
 
 TEST(Adapter, SharedVertexWithMoreContactIsRecordedAsThatVertex) {
@@ -342,27 +366,27 @@ TEST(Adapter, VertexOnFaceRecordsTheVertexAsInterior) {
                       {}});
   // A's vertex 0 inside B's face and A's edge 1 from (1,1/4,1) to (1/4,1,-1) through B's
   // face at its midpoint (5/8, 5/8, 0).
-  check_all_variants({"vertex on face + edge through face",
-                      {Vec3{0.5, 0.5, 0}, Vec3{1, 0.25, 1}, Vec3{0.25, 1, -1}},
-                      kFloor,
-                      {Type::VA_ON_TB, Type::EA_CROSS_TB},
-                      false,
-                      {{q(mpq_class(1, 2), mpq_class(1, 2), 0), V(0), kFace},
-                       {q(mpq_class(5, 8), mpq_class(5, 8), 0), E(1), kFace}},
-                      {{0, 1}}});
+  check_all_variants(
+      {"vertex on face + edge through face",
+       {Vec3{0.5, 0.5, 0}, Vec3{1, 0.25, 1}, Vec3{0.25, 1, -1}},
+       kFloor,
+       {Type::VA_ON_TB, Type::EA_CROSS_TB},
+       false,
+       {{q(mpq_class(1, 2), mpq_class(1, 2), 0), V(0), kFace}, {q(mpq_class(5, 8), mpq_class(5, 8), 0), E(1), kFace}},
+       {{0, 1}}});
 }
 
 TEST(Adapter, EdgeThroughFaceIsAnLpi) {
   // A in the plane y = 1/2: its edge 0 (vertical through (1/4,1/2)) and its edge 2 from
   // (1,1/2,1) to (1/4,1/2,-1) (crossing z = 0 halfway, at x = 5/8) pierce B's face.
-  check_all_variants({"two edges through face",
-                      {Vec3{0.25, 0.5, -1}, Vec3{0.25, 0.5, 1}, Vec3{1, 0.5, 1}},
-                      kFloor,
-                      {Type::EA_CROSS_TB, Type::EA_CROSS_TB},
-                      false,
-                      {{q(mpq_class(1, 4), mpq_class(1, 2), 0), E(0), kFace},
-                       {q(mpq_class(5, 8), mpq_class(1, 2), 0), E(2), kFace}},
-                      {{0, 1}}});
+  check_all_variants(
+      {"two edges through face",
+       {Vec3{0.25, 0.5, -1}, Vec3{0.25, 0.5, 1}, Vec3{1, 0.5, 1}},
+       kFloor,
+       {Type::EA_CROSS_TB, Type::EA_CROSS_TB},
+       false,
+       {{q(mpq_class(1, 4), mpq_class(1, 2), 0), E(0), kFace}, {q(mpq_class(5, 8), mpq_class(1, 2), 0), E(2), kFace}},
+       {{0, 1}}});
   // A = (-1,1/2,0) (3,1/2,1) (3,1/2,-1) in the plane y = 1/2 touches z = 0 along x in
   // [-1, 3] (its vertex 0 lies in B's plane, outside B); B = kFloor cuts y = 1/2 along x
   // in [0, 3/2]. Both ends of the overlap are where B's edges 1 (x + y = 2) and 2 (x = 0)
@@ -372,8 +396,7 @@ TEST(Adapter, EdgeThroughFaceIsAnLpi) {
                       kFloor,
                       {Type::EB_CROSS_TA, Type::EB_CROSS_TA},
                       false,
-                      {{q(mpq_class(3, 2), mpq_class(1, 2), 0), kFace, E(1)},
-                       {q(0, mpq_class(1, 2), 0), kFace, E(2)}},
+                      {{q(mpq_class(3, 2), mpq_class(1, 2), 0), kFace, E(1)}, {q(0, mpq_class(1, 2), 0), kFace, E(2)}},
                       {{0, 1}}});
 }
 
@@ -438,9 +461,9 @@ TEST(Adapter, CoplanarCrossingKeyUsesTheOtherEdgeAndItsAuxiliaryPoint) {
     EXPECT_TRUE(lpi_of(Vx, F, p.lpi).has_value());
     // Control: the line of A's edge with the common plane (what an undefined construction
     // would use) gives no point, since the line lies in that plane.
-    EXPECT_FALSE(tritri::ImplicitPoint::try_lpi(Vx[F[0][ea]], Vx[F[0][(ea + 1) % 3]], Vx[F[1][0]], Vx[F[1][1]],
-                                                Vx[F[1][2]])
-                     .has_value())
+    EXPECT_FALSE(
+        tritri::ImplicitPoint::try_lpi(Vx[F[0][ea]], Vx[F[0][(ea + 1) % 3]], Vx[F[1][0]], Vx[F[1][1]], Vx[F[1][2]])
+            .has_value())
         << "control: the LPI on B's own plane is undefined";
   }
 }
@@ -455,9 +478,12 @@ bool lies_at(const Exact& x, const Location& l, const std::array<Vec3, 3>& t) {
   const EP p = ep(x);
   const std::array<EP, 3> v = {ep(t[0]), ep(t[1]), ep(t[2])};
   switch (l.kind) {
-    case Location::Vertex: return l.id >= 0 && l.id < 3 && p == v[l.id];
-    case Location::Edge: return l.id >= 0 && l.id <= 2 && tritri_test::in_open_segment(p, v[l.id], v[(l.id + 1) % 3]);
-    default: return tritri_test::in_open_face(p, v);
+    case Location::Vertex:
+      return l.id >= 0 && l.id < 3 && p == v[l.id];
+    case Location::Edge:
+      return l.id >= 0 && l.id <= 2 && tritri_test::in_open_segment(p, v[l.id], v[(l.id + 1) % 3]);
+    default:
+      return tritri_test::in_open_face(p, v);
   }
 }
 
@@ -519,8 +545,8 @@ TEST(Adapter, RandomIntegerPairsGiveDefinedPointsOnTheirSimplices) {
       if (::testing::Test::HasFatalFailure()) return;
     }
   }
-  std::printf("3d grid pairs: %ld classified, %ld intersecting, %ld new points, %ld vertex points\n", st.pairs,
-              st.hits, st.new_points, st.vertex_points);
+  std::printf("3d grid pairs: %ld classified, %ld intersecting, %ld new points, %ld vertex points\n", st.pairs, st.hits,
+              st.new_points, st.vertex_points);
   EXPECT_GT(st.hits, st.pairs / 10);
   EXPECT_GT(st.new_points, 0);
 }
@@ -541,8 +567,8 @@ TEST(Adapter, RandomCoplanarPairsGiveDefinedPointsOnTheirSimplices) {
     check_random_pair(p, st);
     if (::testing::Test::HasFatalFailure()) return;
   }
-  std::printf("coplanar pairs: %ld classified, %ld intersecting, %ld coplanar crossings, %ld vertex points\n",
-              st.pairs, st.hits, st.coplanar_crossings, st.vertex_points);
+  std::printf("coplanar pairs: %ld classified, %ld intersecting, %ld coplanar crossings, %ld vertex points\n", st.pairs,
+              st.hits, st.coplanar_crossings, st.vertex_points);
   EXPECT_GT(st.hits, st.pairs / 10);
   EXPECT_GT(st.coplanar_crossings, 0);
 }

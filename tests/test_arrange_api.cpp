@@ -280,7 +280,8 @@ TEST(ArrangeApi, HandScenesCountsPointsAndTiling) {
       expect_well_formed(a, h.scene, what);
       expect_provenance(a, h.scene, what, true);
       EXPECT_EQ((std::array<long long, 3>{a.V.rows(), (long long)a.stats.out_edges, a.F.rows()}),
-                (std::array<long long, 3>{h.V, h.E, h.F})) << what << ": V, E, F";
+                (std::array<long long, 3>{h.V, h.E, h.F}))
+          << what << ": V, E, F";
       std::vector<int> per_source(h.scene.F.rows(), 0);
       for (int f = 0; f < a.F.rows(); ++f) ++per_source.at(a.source(f));
       EXPECT_EQ(per_source, h.per_source) << what;
@@ -294,7 +295,8 @@ TEST(ArrangeApi, HandScenesCountsPointsAndTiling) {
       EXPECT_TRUE(a.stats.intersection_points == h.fresh.size() && a.stats.tpi == 0) << what;
       EXPECT_EQ(a.stats.classifier, name_of(c));
       if (h.scene.labels.size() == 0) {
-        for (int f = 0; f < a.F.rows(); ++f) EXPECT_EQ(labels_of(a, f), std::vector<int>{0}) << what;  // no labels: all 0
+        for (int f = 0; f < a.F.rows(); ++f)
+          EXPECT_EQ(labels_of(a, f), std::vector<int>{0}) << what;  // no labels: all 0
       }
     }
 }
@@ -389,8 +391,15 @@ TEST(ArrangeApi, DuplicateTrianglesUniteLabels) {
 // Nothing intersects: the output is the input (vertices in first-use order, each
 // triangle the same up to a rotation of its corners, source = row).
 TEST(ArrangeApi, DisjointTrianglesAreOutputUnchanged) {
-  const Scene s = scene({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 5, 5}, {6, 5, 5.5}, {5, 7, 6}, {0.1, 0.2, 9},
-                         {0.3, 0.1, 9.5}, {0.2, 0.7, 9}},
+  const Scene s = scene({{0, 0, 0},
+                         {1, 0, 0},
+                         {0, 1, 0},
+                         {5, 5, 5},
+                         {6, 5, 5.5},
+                         {5, 7, 6},
+                         {0.1, 0.2, 9},
+                         {0.3, 0.1, 9.5},
+                         {0.2, 0.7, 9}},
                         {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}}, {4, 1, 4});
   const EigenArrangement a = run(s);
   expect_well_formed(a, s, "disjoint");
@@ -484,7 +493,11 @@ TEST(ArrangeApi, BadInputThrowsInvalidArgument) {
     with("V with " + std::to_string(cols) + " columns", Scene{Eigen::MatrixXd::Zero(6, cols), s.F, {}});
     with("F with " + std::to_string(cols) + " columns", Scene{s.V, Eigen::MatrixXi::Zero(2, cols), {}});
   }
-  auto change = [&](auto edit) { Scene t = s; edit(t); return t; };
+  auto change = [&](auto edit) {
+    Scene t = s;
+    edit(t);
+    return t;
+  };
   for (double bad : {NAN, INFINITY, -INFINITY})
     for (int r : {0, 5})
       with(std::to_string(bad) + " in row " + std::to_string(r), change([&](Scene& t) { t.V(r, r % 3) = bad; }));
@@ -570,10 +583,12 @@ TEST(ArrangeApi, SameOutputAsTheSoupApi) {
         EXPECT_EQ(labels_of(a, f), std::vector<int>(set.begin(), set.end())) << what << ": face " << f;
       }
       const auto counts = [](const arrangements::ArrangeStats& t) {
-        return std::vector<std::size_t>{t.in_vertices, t.in_triangles, t.merged_vertices, t.removed_degenerate,
-                                        t.removed_duplicate, t.candidate_pairs, t.intersecting_pairs, t.coplanar_pairs,
-                                        t.intersection_points, t.segments, t.tri_segments, t.tpi, t.out_vertices,
-                                        t.out_edges, t.out_triangles, std::size_t(t.euler), std::size_t(t.threads)};
+        return std::vector<std::size_t>{t.in_vertices,        t.in_triangles,        t.merged_vertices,
+                                        t.removed_degenerate, t.removed_duplicate,   t.candidate_pairs,
+                                        t.intersecting_pairs, t.coplanar_pairs,      t.intersection_points,
+                                        t.segments,           t.tri_segments,        t.tpi,
+                                        t.out_vertices,       t.out_edges,           t.out_triangles,
+                                        std::size_t(t.euler), std::size_t(t.threads)};
       };
       EXPECT_EQ(counts(a.stats), counts(r.stats)) << what;
       EXPECT_EQ(a.stats.classifier, r.stats.classifier) << what;

@@ -24,7 +24,6 @@
 #include "support/shared_meshes.h"
 #include "support/temp_dir.h"
 
-
 namespace {
 
 using tritri_test::Exit;
@@ -34,7 +33,9 @@ namespace fs = std::filesystem;
 
 using CliRun = tritri_test::CommandRun;
 
-CliRun run(const std::string& args) { return tritri_test::run_command(std::string(ARRANGE_BIN) + " " + args + " 2>&1"); }
+CliRun run(const std::string& args) {
+  return tritri_test::run_command(std::string(ARRANGE_BIN) + " " + args + " 2>&1");
+}
 
 std::string bad(const char* name) { return (tritri_test::bad_input_dir() / name).string(); }
 
@@ -103,10 +104,27 @@ std::string shown(const std::vector<std::string>& args) {
 
 // Values no integer option takes: empty, signs, spaces, prefixes, suffixes, fractions,
 // NaN, numbers beyond every range (2^31 - 1, 2^63, 2^64, 10^30), an option.
-const std::vector<std::string> kBadIntegers = {
-    "", "-1", "-0", "+5", " 5", "5 ", "5x", "0x10", "1e3", "1.5", "nan", "NaN", "inf", "two",
-    "2147483647", "2147483648", "9223372036854775807", "9223372036854775808", "18446744073709551616",
-    "1000000000000000000000000000000", "--stats"};
+const std::vector<std::string> kBadIntegers = {"",
+                                               "-1",
+                                               "-0",
+                                               "+5",
+                                               " 5",
+                                               "5 ",
+                                               "5x",
+                                               "0x10",
+                                               "1e3",
+                                               "1.5",
+                                               "nan",
+                                               "NaN",
+                                               "inf",
+                                               "two",
+                                               "2147483647",
+                                               "2147483648",
+                                               "9223372036854775807",
+                                               "9223372036854775808",
+                                               "18446744073709551616",
+                                               "1000000000000000000000000000000",
+                                               "--stats"};
 
 // A two-triangle model (B pierces A) in `dir`.
 std::string two_triangles(const fs::path& dir) {
@@ -140,10 +158,11 @@ TEST(ArrangeCli, EveryHostileOptionValueIsAUsageError) {
   for (const std::string v : {"", "magic", "TRITRI", " tritri", "tritri ", "--stats"})
     cases.push_back({mesh, "--stats", "--classifier", v});
   for (const char* opt : {"--threads", "-o", "--output", "--classifier"}) cases.push_back({mesh, "--stats", opt});
-  const std::vector<std::vector<std::string>> twice = {
-      {"--threads", "1", "--threads", "1"},     {"--threads", "1", "--threads", "2"},
-      {"-o", "a.off", "-o", "a.off"},           {"-o", "a.off", "--output", "b.off"},
-      {"--classifier", "native", "--classifier", "tritri"}};
+  const std::vector<std::vector<std::string>> twice = {{"--threads", "1", "--threads", "1"},
+                                                       {"--threads", "1", "--threads", "2"},
+                                                       {"-o", "a.off", "-o", "a.off"},
+                                                       {"-o", "a.off", "--output", "b.off"},
+                                                       {"--classifier", "native", "--classifier", "tritri"}};
   for (auto args : twice) {
     for (auto& a : args)
       if (a.ends_with(".off")) a = dir.path(a);
@@ -165,7 +184,8 @@ TEST(ArrangeCli, EveryHostileOptionValueIsAUsageError) {
 TEST(ArrangeCli, ThreadCountsUpToTheCapRun) {
   tritri_test::TempDir dir;
   const std::string mesh = two_triangles(dir.path());
-  for (const std::string& v : {std::string("0"), std::string("1"), std::string("0002"), std::to_string(arrangements::kMaxThreads)}) {
+  for (const std::string& v :
+       {std::string("0"), std::string("1"), std::string("0002"), std::to_string(arrangements::kMaxThreads)}) {
     const Exit e = spawn(ARRANGE_BIN, {mesh, "--stats", "--threads", v, "--check"}, dir.path());
     ASSERT_TRUE(e.exited) << v << ": signal " << e.signal;
     EXPECT_EQ(e.code, 0) << v << ": " << e.err;

@@ -16,9 +16,9 @@
 namespace {
 
 using namespace tritri_test::arrangement;
+using tritri_test::exact;
 using tritri_test::Q;
 using tritri_test::Q3;
-using tritri_test::exact;
 
 // A triangulated polygon (a disc) with B boundary and I interior vertices and no other
 // vertices has F = 2I + B - 2 triangles and E = 3I + 2B - 3 edges, whatever the
@@ -110,12 +110,13 @@ TEST(Arrange, EulerCharacteristicsByHand) {
 // Three spheres: each of the two triple points lies inside one triangle of each sphere
 // (generic position), where two constraints cross: two TPIs.
 TEST(Arrange, TriplePointsAreSingleExactTPIs) {
-  const std::set<Q3> ends = {{Q(-1), Q(0), Q(0)}, {Q(2), Q(0), Q(0)}, {Q(0), Q(-1), Q(0)},
+  const std::set<Q3> ends = {{Q(-1), Q(0), Q(0)}, {Q(2), Q(0), Q(0)},  {Q(0), Q(-1), Q(0)},
                              {Q(0), Q(1), Q(0)},  {Q(0), Q(0), Q(-1)}, {Q(0), Q(0), Q(1)}};
   for (Classifier c : kClassifiers) {
     const Pipeline p = run_stages(three_triangles_triple_point(), c);
     std::set<Q3> lpis;
-    for (std::size_t i = p.graph.num_input_vertices; i < p.graph.points.size(); ++i) lpis.insert(exact(p.graph.points[i]));
+    for (std::size_t i = p.graph.num_input_vertices; i < p.graph.points.size(); ++i)
+      lpis.insert(exact(p.graph.points[i]));
     EXPECT_EQ(lpis, ends) << name_of(c);
     ASSERT_EQ(p.tr.num_tpi, 1u) << name_of(c);
     const ImplicitPoint& o = p.tr.points.back();

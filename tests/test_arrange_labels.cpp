@@ -18,9 +18,9 @@
 namespace {
 
 using namespace tritri_test::arrangement;
-using tritri_test::Q;
-using tritri_test::exact;
 using tritri_test::area2;
+using tritri_test::exact;
+using tritri_test::Q;
 
 struct Region {
   std::size_t triangles = 0;

@@ -29,9 +29,9 @@
 namespace {
 
 using namespace tritri_test::arrangement;
+using tritri_test::exact;
 using tritri_test::Q;
 using tritri_test::Q3;
-using tritri_test::exact;
 using tritri_test::to_cgal;
 namespace fs = std::filesystem;
 
@@ -99,10 +99,10 @@ TEST(Arrange, UnknownExtensionsAreInputErrors) {
 // by 2^k changes no predicate, so the output is the unscaled output times 2^k exactly,
 // also with options.scale (arrange.h: the output is in the input's frame).
 TEST(Arrange, TinyCoordinatesPowerOfTwo) {
-  for (const auto& [name, soup] : std::vector<std::pair<std::string, TriangleSoup>>{
-           {"cube through cube", cube_through_cube()},
-           {"star of David", kRationalStar.soup()},
-           {"two triangles crossing", two_triangles_crossing()}})
+  for (const auto& [name, soup] :
+       std::vector<std::pair<std::string, TriangleSoup>>{{"cube through cube", cube_through_cube()},
+                                                         {"star of David", kRationalStar.soup()},
+                                                         {"two triangles crossing", two_triangles_crossing()}})
     for (Classifier c : kClassifiers) {
       const ArrangeResult ref = run_arrange(soup, c);
       for (int k : {-60, -1000})
@@ -134,10 +134,10 @@ TEST(Arrange, TinyCoordinatesPowerOfTwo) {
 // its combinatorics here, which are far from degenerate): still a valid arrangement with
 // the same topology.
 TEST(Arrange, TinyCoordinatesNotAPowerOfTwo) {
-  for (const auto& [name, soup, euler] : std::vector<std::tuple<std::string, TriangleSoup, long long>>{
-           {"cube through cube", cube_through_cube(), 4},
-           {"two spheres", two_spheres(), 4},
-           {"rational star", kRationalStar.soup(), 1}})
+  for (const auto& [name, soup, euler] :
+       std::vector<std::tuple<std::string, TriangleSoup, long long>>{{"cube through cube", cube_through_cube(), 4},
+                                                                     {"two spheres", two_spheres(), 4},
+                                                                     {"rational star", kRationalStar.soup(), 1}})
     for (Classifier c : kClassifiers)
       for (bool scale : {false, true}) {
         const std::string what = name + " (" + name_of(c) + ")" + (scale ? " scaled" : "");

@@ -47,18 +47,17 @@ TEST(Arrangement, GeneratedScenesPassCheckArrangement) {
 }
 
 TEST(Arrangement, SmallScenesPassIndependentAllPairsCheck) {
-  for (const auto& [name, soup] :
-       std::vector<std::pair<std::string, TriangleSoup>>{{"two triangles crossing", two_triangles_crossing()},
-                                                         {"triangle pierced", triangle_pierced()},
-                                                         {"cube through cube", cube_through_cube()},
-                                                         {"overlapping squares", overlapping_squares()},
-                                                         {"overlapping triangles", overlapping_triangles(false)},
-                                                         {"star of David", kIntegerStar.soup()},
-                                                         {"rational star", kRationalStar.soup()},
-                                                         {"grids sharing cells", grids_sharing_cells()},
-                                                         {"rotated grids", rotated_copies(grid(2, 1.0, 0.0), 3)},
-                                                         {"small spheres", concatenate(uv_sphere({0, 0, 0}, 1, 4, 6),
-                                                                                       uv_sphere({0.5, 0.2, 0.1}, 0.9, 5, 5))}})
+  for (const auto& [name, soup] : std::vector<std::pair<std::string, TriangleSoup>>{
+           {"two triangles crossing", two_triangles_crossing()},
+           {"triangle pierced", triangle_pierced()},
+           {"cube through cube", cube_through_cube()},
+           {"overlapping squares", overlapping_squares()},
+           {"overlapping triangles", overlapping_triangles(false)},
+           {"star of David", kIntegerStar.soup()},
+           {"rational star", kRationalStar.soup()},
+           {"grids sharing cells", grids_sharing_cells()},
+           {"rotated grids", rotated_copies(grid(2, 1.0, 0.0), 3)},
+           {"small spheres", concatenate(uv_sphere({0, 0, 0}, 1, 4, 6), uv_sphere({0.5, 0.2, 0.1}, 0.9, 5, 5))}})
     for (Classifier c : kClassifiers) {
       const ArrangeResult r = run_arrange(soup, c);
       expect_no_problems(all_pairs_problems(r.mesh.vertices, r.mesh.triangles), name + " (" + name_of(c) + ")");

@@ -28,8 +28,8 @@ using arrangements::arrange;
 using arrangements::ArrangeOptions;
 using arrangements::candidate_pairs;
 using arrangements::kMaxThreads;
-using arrangements::TriangleSoup;
 using arrangements::Tri;
+using arrangements::TriangleSoup;
 using arrangements::Vec3;
 using Pairs = std::vector<std::pair<int, int>>;
 
@@ -54,10 +54,10 @@ Pairs brute_force_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F) {
 TEST(CandidatePairs, TouchingBoxesCountAndBoxesOneUlpApartDoNot) {
   const double gap = std::nextafter(1.0, 2.0);
   const std::vector<Vec3> V = {
-      {0, 0, 0}, {1, 0, 0}, {0, 1, 1},        // 0: box x in [0, 1]
+      {0, 0, 0},   {1, 0, 0},   {0, 1, 1},    // 0: box x in [0, 1]
       {1, 0, 0.5}, {2, 1, 0.5}, {2, 0, 0.5},  // 1: x in [1, 2], shares only the plane x = 1
-      {gap, 0, 0}, {2, 0, 1}, {2, 1, 0},      // 2: x in [1 + ulp, 2]: misses 0
-      {5, 5, 5}, {6, 5, 5}, {5, 6, 5},        // 3: far away
+      {gap, 0, 0}, {2, 0, 1},   {2, 1, 0},    // 2: x in [1 + ulp, 2]: misses 0
+      {5, 5, 5},   {6, 5, 5},   {5, 6, 5},    // 3: far away
   };
   const std::vector<Tri> F = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}};
   EXPECT_EQ(candidate_pairs(V, F), (Pairs{{0, 1}, {1, 2}}));
@@ -158,9 +158,15 @@ TEST(CandidatePairs, EqualsBruteForceOnGeneratedSoupsForEveryThreadCount) {
   for (int trial = 0; trial < 24; ++trial) {
     const int n = trial < 18 ? 50 + trial * 60 : 9000;
     switch (trial % 3) {
-      case 0: n < 9000 ? grid_soup(rng, n, 1, 2 + trial % 5, V, F) : grid_soup(rng, n, 30, 3, V, F); break;
-      case 1: random_soup(rng, n, V, F); break;
-      case 2: needle_soup(rng, n, V, F); break;
+      case 0:
+        n < 9000 ? grid_soup(rng, n, 1, 2 + trial % 5, V, F) : grid_soup(rng, n, 30, 3, V, F);
+        break;
+      case 1:
+        random_soup(rng, n, V, F);
+        break;
+      case 2:
+        needle_soup(rng, n, V, F);
+        break;
     }
     const Pairs expected = brute_force_pairs(V, F);
     for (int threads : {1, 2, 3, 0}) ASSERT_EQ(candidate_pairs(V, F, threads), expected) << trial << " " << threads;
@@ -187,7 +193,8 @@ TEST(CandidatePairs, WithPolygonFacesEqualsBruteForceMinusPairsInsideOneFace) {
     Pairs expected;
     for (const auto& [i, j] : brute_force_pairs(V, F))
       if (polygon[i] < 0 || polygon[i] != polygon[j]) expected.emplace_back(i, j);
-    for (int threads : {1, 2, 0}) ASSERT_EQ(candidate_pairs(V, F, threads, polygon), expected) << trial << " " << threads;
+    for (int threads : {1, 2, 0})
+      ASSERT_EQ(candidate_pairs(V, F, threads, polygon), expected) << trial << " " << threads;
   }
 }
 

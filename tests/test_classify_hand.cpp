@@ -160,10 +160,9 @@ TEST(ClassifyHand, SharedEdgeCoplanarSameSide) {
   // B2 = (1,1,0) is inside A, so B is inside A: corners A0 = B0, A1 = B1, B2.
   // Segments: (0,1) on A's edge 0, (0,2) on B's edge 2, (1,2) on B's edge 1.
   const Tri b = {P{0, 0, 0}, P{4, 0, 0}, P{1, 1, 0}};
-  expect_classification(
-      kA, b,
-      expected({{Type::VA_ON_VB, 0, 0}, {Type::VA_ON_VB, 1, 1}, {Type::VB_ON_TA, 2, -1}}, {{0, 1}, {0, 2}, {1, 2}},
-               true));
+  expect_classification(kA, b,
+                        expected({{Type::VA_ON_VB, 0, 0}, {Type::VA_ON_VB, 1, 1}, {Type::VB_ON_TA, 2, -1}},
+                                 {{0, 1}, {0, 2}, {1, 2}}, true));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -177,14 +176,13 @@ TEST(ClassifyHand, SharedEdgeCoplanarSameSide) {
 //   p4 EA_CROSS_EB(2,0) = (2,4)   p5 EA_CROSS_EB(2,2) = (1,2)
 // (A1A2 || B2B0, A2A0 || B1B2, A0A1 || B0B1.) No vertex is inside the other triangle.
 // Hexagon p0 p3 p2 p4 p5 p1: segments (0,1) (0,3) (1,5) (2,3) (2,4) (4,5).
-const Result kStarOfDavid =
-    expected({{Type::EA_CROSS_EB, 0, 1},
-              {Type::EA_CROSS_EB, 0, 2},
-              {Type::EA_CROSS_EB, 1, 0},
-              {Type::EA_CROSS_EB, 1, 1},
-              {Type::EA_CROSS_EB, 2, 0},
-              {Type::EA_CROSS_EB, 2, 2}},
-             {{0, 1}, {0, 3}, {1, 5}, {2, 3}, {2, 4}, {4, 5}}, true);
+const Result kStarOfDavid = expected({{Type::EA_CROSS_EB, 0, 1},
+                                      {Type::EA_CROSS_EB, 0, 2},
+                                      {Type::EA_CROSS_EB, 1, 0},
+                                      {Type::EA_CROSS_EB, 1, 1},
+                                      {Type::EA_CROSS_EB, 2, 0},
+                                      {Type::EA_CROSS_EB, 2, 2}},
+                                     {{0, 1}, {0, 3}, {1, 5}, {2, 3}, {2, 4}, {4, 5}}, true);
 
 TEST(ClassifyHand, StarOfDavidInAxisPlane) {
   const Tri a = {P{0, 0, 0}, P{6, 0, 0}, P{3, 6, 0}};
@@ -219,43 +217,38 @@ TEST(ClassifyHand, CoplanarPentagonWithVertexOnEdge) {
 
 TEST(ClassifyHand, CoplanarBStrictlyInsideA) {
   const Tri b = {P{1, 1, 0}, P{2, 1, 0}, P{1, 2, 0}};  // x, y > 0 and x + y < 4
-  expect_classification(
-      kA, b,
-      expected({{Type::VB_ON_TA, 0, -1}, {Type::VB_ON_TA, 1, -1}, {Type::VB_ON_TA, 2, -1}},
-               {{0, 1}, {0, 2}, {1, 2}}, true));
+  expect_classification(kA, b,
+                        expected({{Type::VB_ON_TA, 0, -1}, {Type::VB_ON_TA, 1, -1}, {Type::VB_ON_TA, 2, -1}},
+                                 {{0, 1}, {0, 2}, {1, 2}}, true));
 }
 
 TEST(ClassifyHand, CoplanarAStrictlyInsideB) {
   const Tri a = {P{1, 1, 0}, P{2, 1, 0}, P{1, 2, 0}};
-  expect_classification(
-      a, kA,
-      expected({{Type::VA_ON_TB, 0, -1}, {Type::VA_ON_TB, 1, -1}, {Type::VA_ON_TB, 2, -1}},
-               {{0, 1}, {0, 2}, {1, 2}}, true));
+  expect_classification(a, kA,
+                        expected({{Type::VA_ON_TB, 0, -1}, {Type::VA_ON_TB, 1, -1}, {Type::VA_ON_TB, 2, -1}},
+                                 {{0, 1}, {0, 2}, {1, 2}}, true));
 }
 
 TEST(ClassifyHand, IdenticalTriangles) {
-  expect_classification(
-      kA, kA,
-      expected({{Type::VA_ON_VB, 0, 0}, {Type::VA_ON_VB, 1, 1}, {Type::VA_ON_VB, 2, 2}},
-               {{0, 1}, {0, 2}, {1, 2}}, true));
+  expect_classification(kA, kA,
+                        expected({{Type::VA_ON_VB, 0, 0}, {Type::VA_ON_VB, 1, 1}, {Type::VA_ON_VB, 2, 2}},
+                                 {{0, 1}, {0, 2}, {1, 2}}, true));
 }
 
 TEST(ClassifyHand, IdenticalTrianglesRotatedOrder) {
   // B = (A1, A2, A0): A0 = B2, A1 = B0, A2 = B1.
   const Tri b = {kA[1], kA[2], kA[0]};
-  expect_classification(
-      kA, b,
-      expected({{Type::VA_ON_VB, 0, 2}, {Type::VA_ON_VB, 1, 0}, {Type::VA_ON_VB, 2, 1}},
-               {{0, 1}, {0, 2}, {1, 2}}, true));
+  expect_classification(kA, b,
+                        expected({{Type::VA_ON_VB, 0, 2}, {Type::VA_ON_VB, 1, 0}, {Type::VA_ON_VB, 2, 1}},
+                                 {{0, 1}, {0, 2}, {1, 2}}, true));
 }
 
 TEST(ClassifyHand, IdenticalTrianglesReversedOrder) {
   // B = (A0, A2, A1): A0 = B0, A1 = B2, A2 = B1.
   const Tri b = {kA[0], kA[2], kA[1]};
-  expect_classification(
-      kA, b,
-      expected({{Type::VA_ON_VB, 0, 0}, {Type::VA_ON_VB, 1, 2}, {Type::VA_ON_VB, 2, 1}},
-               {{0, 1}, {0, 2}, {1, 2}}, true));
+  expect_classification(kA, b,
+                        expected({{Type::VA_ON_VB, 0, 0}, {Type::VA_ON_VB, 1, 2}, {Type::VA_ON_VB, 2, 1}},
+                                 {{0, 1}, {0, 2}, {1, 2}}, true));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -264,8 +257,8 @@ TEST(ClassifyHand, IdenticalTrianglesReversedOrder) {
 TEST(ClassifyHand, VertexOneUlpOutsideEdgeMisses) {
   // B0 = (2, y, 0) with B1, B2 above z = 0: only B0 can touch A.
   auto b = [](double y) { return Tri{P{2, y, 0}, P{2, -1, 3}, P{3, 1, 2}}; };
-  expect_classification(kA, b(-kDenormMin), kNoIntersection);                          // y < 0: outside
-  expect_classification(kA, b(0), expected({{Type::VB_ON_EA, 0, 0}}, {}, false));      // on edge 0
+  expect_classification(kA, b(-kDenormMin), kNoIntersection);                                // y < 0: outside
+  expect_classification(kA, b(0), expected({{Type::VB_ON_EA, 0, 0}}, {}, false));            // on edge 0
   expect_classification(kA, b(kDenormMin), expected({{Type::VB_ON_TA, 0, -1}}, {}, false));  // inside
 }
 
@@ -308,8 +301,7 @@ TEST(ClassifyHand, CoplanarOneUlpApartMisses) {
   expect_classification(kA, b(0), expected({{Type::VA_ON_VB, 0, 0}}, {}, true));
   // x = d > 0: A ∩ B = the segment [0, d] of the x axis: A0 inside B's edge 0, B0 inside A's
   // edge 0.
-  expect_classification(kA, b(kDenormMin),
-                        expected({{Type::VA_ON_EB, 0, 0}, {Type::VB_ON_EA, 0, 0}}, {{0, 1}}, true));
+  expect_classification(kA, b(kDenormMin), expected({{Type::VA_ON_EB, 0, 0}, {Type::VB_ON_EA, 0, 0}}, {{0, 1}}, true));
 }
 
 TEST(ClassifyHand, NearMissesAtHugeAndTinyScales) {

@@ -17,25 +17,33 @@
 
 namespace {
 
-using tritri_test::test_scale;
 using arrangements::Location;
 using arrangements::PairIntersection;
 using arrangements::Tri;
 using arrangements::Vec3;
+using tritri_test::test_scale;
 using LocPair = std::pair<std::pair<int, int>, std::pair<int, int>>;  // ((kindA, idA), (kindB, idB))
 
 LocPair locations_of(const tritri::IntersectionPoint& p) {
   using T = tritri::Type;
   const int V = Location::Vertex, E = Location::Edge, I = Location::Interior;
   switch (p.type) {
-    case T::VA_ON_VB: return {{V, p.id0}, {V, p.id1}};
-    case T::VA_ON_EB: return {{V, p.id0}, {E, p.id1}};
-    case T::VB_ON_EA: return {{E, p.id1}, {V, p.id0}};
-    case T::VA_ON_TB: return {{V, p.id0}, {I, -1}};
-    case T::VB_ON_TA: return {{I, -1}, {V, p.id0}};
-    case T::EA_CROSS_EB: return {{E, p.id0}, {E, p.id1}};
-    case T::EA_CROSS_TB: return {{E, p.id0}, {I, -1}};
-    default: return {{I, -1}, {E, p.id0}};
+    case T::VA_ON_VB:
+      return {{V, p.id0}, {V, p.id1}};
+    case T::VA_ON_EB:
+      return {{V, p.id0}, {E, p.id1}};
+    case T::VB_ON_EA:
+      return {{E, p.id1}, {V, p.id0}};
+    case T::VA_ON_TB:
+      return {{V, p.id0}, {I, -1}};
+    case T::VB_ON_TA:
+      return {{I, -1}, {V, p.id0}};
+    case T::EA_CROSS_EB:
+      return {{E, p.id0}, {E, p.id1}};
+    case T::EA_CROSS_TB:
+      return {{E, p.id0}, {I, -1}};
+    default:
+      return {{I, -1}, {E, p.id0}};
   }
 }
 
@@ -136,7 +144,7 @@ TEST(ClassifyNative, AgreesWithTritriOnCoplanarAndSharedVertexPairs) {
       v = {double(d(rng)), double(d(rng)), 0.0};
       v[2] = 0.5 * v[0] - 0.25 * v[1];  // one exact plane
     }
-    if (it % 2) p[3] = p[it % 3];  // a shared vertex
+    if (it % 2) p[3] = p[it % 3];                          // a shared vertex
     if (it % 4 == 1) p[4] = p[(it / 4) % 3 == 0 ? 1 : 2];  // sometimes a shared edge
     check_pair(p, compared, intersecting);
     if (::testing::Test::HasFatalFailure()) return;

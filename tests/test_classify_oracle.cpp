@@ -48,8 +48,8 @@ tritri::Result classify_double(const Pair& p) {
 template <class CK>
 tritri::Result classify_cgal(const Pair& p) {
   auto pt = [](const tritri_test::Point& v) { return typename CK::Point_3(v[0], v[1], v[2]); };
-  return tritri::classify<tritri::CgalKernel<CK>>(pt(p.a[0]), pt(p.a[1]), pt(p.a[2]), pt(p.b[0]),
-                                                  pt(p.b[1]), pt(p.b[2]));
+  return tritri::classify<tritri::CgalKernel<CK>>(pt(p.a[0]), pt(p.a[1]), pt(p.a[2]), pt(p.b[0]), pt(p.b[1]),
+                                                  pt(p.b[2]));
 }
 
 std::string result_string(const tritri::Result& r) { return tritri_test::result_string(r); }
@@ -60,8 +60,7 @@ class FailureLog {
  public:
   void add(const std::string& source, const Pair& p, const std::string& what) {
     ++per_source_[source];
-    if (++count_ <= kKeptFailures)
-      messages_.push_back("[" + source + "] " + what + "\n" + tritri_test::describe(p));
+    if (++count_ <= kKeptFailures) messages_.push_back("[" + source + "] " + what + "\n" + tritri_test::describe(p));
   }
   void merge(const FailureLog& other) {
     for (const auto& [source, n] : other.per_source_) per_source_[source] += n;
@@ -109,8 +108,8 @@ struct Coverage {
     ++by_size[r.points.size()];
   }
   void print() const {
-    std::printf("pairs %lld, intersecting %lld, coplanar %lld, degenerate %lld\n", pairs, intersecting,
-                coplanar, degenerate);
+    std::printf("pairs %lld, intersecting %lld, coplanar %lld, degenerate %lld\n", pairs, intersecting, coplanar,
+                degenerate);
     for (int t = 0; t < 8; ++t)
       std::printf("  %-12s %lld\n", tritri::to_string(static_cast<tritri::Type>(t)), by_type[t]);
     for (int k = 0; k <= 6; ++k) std::printf("  %d points: %lld\n", k, by_size[k]);
@@ -187,8 +186,7 @@ TEST(ClassifyOracle, GeneratedPairsMatchExactCgalIntersection) {
   // The generators must reach every type and every shape of the intersection (checked from
   // 20,000 pairs on: hexagons are about 0.3% of the pairs).
   if (n >= 20'000) {
-    for (int t = 0; t < 8; ++t)
-      EXPECT_GT(coverage.by_type[t], 0) << tritri::to_string(static_cast<tritri::Type>(t));
+    for (int t = 0; t < 8; ++t) EXPECT_GT(coverage.by_type[t], 0) << tritri::to_string(static_cast<tritri::Type>(t));
     for (int k = 0; k <= 6; ++k) EXPECT_GT(coverage.by_size[k], 0) << k << " points";
     EXPECT_GT(coverage.coplanar, n / 10);
     EXPECT_GT(coverage.degenerate, 0);
@@ -204,7 +202,8 @@ TEST(ClassifyOracle, OracleRejectsCorruptedResults) {
   auto expect_rejected = [&](const Pair& p, const tritri::Result& bad, const char* how) {
     ++corruptions;
     EXPECT_NE(tritri_test::check_classification(p, bad), "")
-        << how << ": oracle accepted " << result_string(bad) << "\n" << tritri_test::describe(p);
+        << how << ": oracle accepted " << result_string(bad) << "\n"
+        << tritri_test::describe(p);
   };
   for (long long i = 0; i < n; ++i) {
     std::size_t g;
@@ -257,7 +256,8 @@ TEST(ClassifyOracle, OracleRejectsCorruptedResults) {
       bool added = false;
       for (std::int8_t a = 0; a < static_cast<std::int8_t>(r.points.size()); ++a)
         for (std::int8_t b = a + 1; b < static_cast<std::int8_t>(r.points.size()); ++b) {
-          const bool present = std::find(r.segments.begin(), r.segments.end(), tritri::Segment{a, b}) != r.segments.end();
+          const bool present =
+              std::find(r.segments.begin(), r.segments.end(), tritri::Segment{a, b}) != r.segments.end();
           if (present || !added) {
             if (!present) added = true;
             more.segments.push_back({a, b});
@@ -300,9 +300,9 @@ TEST(ClassifyOracle, CgalBackendsGiveTheDoubleKernelResult) {
   for_chunks(n, kOracleSeed, [&](long long c, Chunk& chunk) {
     auto compare = [&](const char* backend, const Pair& p, const tritri::Result& want, const tritri::Result& got) {
       if (!(got == want))
-        logs[c].add(backend, p,
-                    std::string(backend) + " gives " + result_string(got) + "\n  DoubleKernel gives " +
-                        result_string(want));
+        logs[c].add(
+            backend, p,
+            std::string(backend) + " gives " + result_string(got) + "\n  DoubleKernel gives " + result_string(want));
     };
     for (long long i = 0; i < chunk.count; ++i) {
       std::size_t g;

@@ -80,14 +80,22 @@ Canonical canonical(const Result& r) {
 // swapped triangle comes first).
 IntersectionPoint mirrored(IntersectionPoint p) {
   switch (p.type) {
-    case Type::VA_ON_VB: return {Type::VA_ON_VB, p.id1, p.id0};
-    case Type::VA_ON_EB: return {Type::VB_ON_EA, p.id0, p.id1};
-    case Type::VB_ON_EA: return {Type::VA_ON_EB, p.id0, p.id1};
-    case Type::VA_ON_TB: return {Type::VB_ON_TA, p.id0, -1};
-    case Type::VB_ON_TA: return {Type::VA_ON_TB, p.id0, -1};
-    case Type::EA_CROSS_EB: return {Type::EA_CROSS_EB, p.id1, p.id0};
-    case Type::EA_CROSS_TB: return {Type::EB_CROSS_TA, p.id0, -1};
-    default: return {Type::EA_CROSS_TB, p.id0, -1};  // EB_CROSS_TA
+    case Type::VA_ON_VB:
+      return {Type::VA_ON_VB, p.id1, p.id0};
+    case Type::VA_ON_EB:
+      return {Type::VB_ON_EA, p.id0, p.id1};
+    case Type::VB_ON_EA:
+      return {Type::VA_ON_EB, p.id0, p.id1};
+    case Type::VA_ON_TB:
+      return {Type::VB_ON_TA, p.id0, -1};
+    case Type::VB_ON_TA:
+      return {Type::VA_ON_TB, p.id0, -1};
+    case Type::EA_CROSS_EB:
+      return {Type::EA_CROSS_EB, p.id1, p.id0};
+    case Type::EA_CROSS_TB:
+      return {Type::EB_CROSS_TA, p.id0, -1};
+    default:
+      return {Type::EA_CROSS_TB, p.id0, -1};  // EB_CROSS_TA
   }
 }
 
@@ -105,14 +113,22 @@ constexpr Renumbering kIdentity = {{0, 1, 2}, {0, 1, 2}};
 
 IntersectionPoint renumbered(IntersectionPoint p, const Renumbering& a, const Renumbering& b) {
   switch (p.type) {
-    case Type::VA_ON_VB: return {p.type, a.vertex[p.id0], b.vertex[p.id1]};
-    case Type::VA_ON_EB: return {p.type, a.vertex[p.id0], b.edge[p.id1]};
-    case Type::VB_ON_EA: return {p.type, b.vertex[p.id0], a.edge[p.id1]};
-    case Type::VA_ON_TB: return {p.type, a.vertex[p.id0], -1};
-    case Type::VB_ON_TA: return {p.type, b.vertex[p.id0], -1};
-    case Type::EA_CROSS_EB: return {p.type, a.edge[p.id0], b.edge[p.id1]};
-    case Type::EA_CROSS_TB: return {p.type, a.edge[p.id0], -1};
-    default: return {p.type, b.edge[p.id0], -1};  // EB_CROSS_TA
+    case Type::VA_ON_VB:
+      return {p.type, a.vertex[p.id0], b.vertex[p.id1]};
+    case Type::VA_ON_EB:
+      return {p.type, a.vertex[p.id0], b.edge[p.id1]};
+    case Type::VB_ON_EA:
+      return {p.type, b.vertex[p.id0], a.edge[p.id1]};
+    case Type::VA_ON_TB:
+      return {p.type, a.vertex[p.id0], -1};
+    case Type::VB_ON_TA:
+      return {p.type, b.vertex[p.id0], -1};
+    case Type::EA_CROSS_EB:
+      return {p.type, a.edge[p.id0], b.edge[p.id1]};
+    case Type::EA_CROSS_TB:
+      return {p.type, a.edge[p.id0], -1};
+    default:
+      return {p.type, b.edge[p.id0], -1};  // EB_CROSS_TA
   }
 }
 
@@ -194,9 +210,9 @@ TEST(ClassifyProperties, AxisPermutationsAndSignFlipsChangeNothing) {
     const Result r = classify(p);
     for (int perm = 0; perm < 6; ++perm)
       for (int flips = 0; flips < 8; ++flips) {
-        const std::string s = mismatch(("axes permuted (" + std::to_string(perm) + ", flips " +
-                                        std::to_string(flips) + ")").c_str(),
-                                       r, classify(tritri_test::permute_axes(p, perm, flips)));
+        const std::string s =
+            mismatch(("axes permuted (" + std::to_string(perm) + ", flips " + std::to_string(flips) + ")").c_str(), r,
+                     classify(tritri_test::permute_axes(p, perm, flips)));
         if (!s.empty()) return s;
       }
     return std::string();
@@ -244,7 +260,8 @@ TEST(ClassifyProperties, PowerOfTwoScalingChangesNothing) {
     if (!tritri_test::scale_by_power_of_two(p, k, q)) continue;
     ++exact;
     const std::string s = mismatch(("scaled by 2^" + std::to_string(k)).c_str(), classify(p), classify(q));
-    if (!s.empty() && ++failures <= 5) ADD_FAILURE() << "[" << gens[g].name << "] " << s << "\n" << tritri_test::describe(p);
+    if (!s.empty() && ++failures <= 5)
+      ADD_FAILURE() << "[" << gens[g].name << "] " << s << "\n" << tritri_test::describe(p);
   }
   EXPECT_EQ(failures, 0);
   if (n >= 1000) {

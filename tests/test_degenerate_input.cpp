@@ -61,8 +61,8 @@ void check_result(const Pair& pair, Expect expect, const std::string& where) {
   const char* backends[] = {"DoubleKernel", "Epick", "Epeck", "Simple_cartesian<Gmpq>"};
   for (int i = 0; i < 4; ++i) {
     const Result& r = results[i];
-    const bool ok = r.points.empty() && r.segments.empty() && !r.coplanar &&
-                    (expect == Expect::EmptyEitherFlag || r.degenerate);
+    const bool ok =
+        r.points.empty() && r.segments.empty() && !r.coplanar && (expect == Expect::EmptyEitherFlag || r.degenerate);
     EXPECT_TRUE(ok) << where << " [" << backends[i] << "]: got " << r << "\n" << tritri_test::describe(pair);
   }
 }

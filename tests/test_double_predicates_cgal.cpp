@@ -29,10 +29,10 @@ TEST(Orient3dAgreesWithCgal, OrientationOnEpeckAndEpick) {
   for (long i = 0, n = tritri_test::scaled_count(5000); i < n; ++i) {
     const Case<3> p = mixed_case<3>(r);
     const int got = sign_of(tritri_sign(p));
-    const int epeck = from_cgal(CGAL::orientation(to_cgal<Epeck>(p[0]), to_cgal<Epeck>(p[1]),
-                                                  to_cgal<Epeck>(p[2]), to_cgal<Epeck>(p[3])));
-    const int epick = from_cgal(CGAL::orientation(to_cgal<Epick>(p[0]), to_cgal<Epick>(p[1]),
-                                                  to_cgal<Epick>(p[2]), to_cgal<Epick>(p[3])));
+    const int epeck = from_cgal(
+        CGAL::orientation(to_cgal<Epeck>(p[0]), to_cgal<Epeck>(p[1]), to_cgal<Epeck>(p[2]), to_cgal<Epeck>(p[3])));
+    const int epick = from_cgal(
+        CGAL::orientation(to_cgal<Epick>(p[0]), to_cgal<Epick>(p[1]), to_cgal<Epick>(p[2]), to_cgal<Epick>(p[3])));
     ASSERT_EQ(got, epeck) << describe(p);
     ASSERT_EQ(got, epick) << describe(p);
   }
@@ -45,10 +45,10 @@ TEST(Orient2dAgreesWithCgal, CgalKernelProjectionsOnEveryPlane) {
     const Case<3> p = mixed_case<3>(r);
     for (Plane plane : {Plane::XY, Plane::YZ, Plane::ZX}) {
       const int got = sign_of(tritri::orient2d(p[0], p[1], p[2], plane));
-      const int epeck = sign_of(tritri::CgalKernel<Epeck>::orient2d(
-          to_cgal<Epeck>(p[0]), to_cgal<Epeck>(p[1]), to_cgal<Epeck>(p[2]), plane));
-      const int epick = sign_of(tritri::CgalKernel<Epick>::orient2d(
-          to_cgal<Epick>(p[0]), to_cgal<Epick>(p[1]), to_cgal<Epick>(p[2]), plane));
+      const int epeck = sign_of(
+          tritri::CgalKernel<Epeck>::orient2d(to_cgal<Epeck>(p[0]), to_cgal<Epeck>(p[1]), to_cgal<Epeck>(p[2]), plane));
+      const int epick = sign_of(
+          tritri::CgalKernel<Epick>::orient2d(to_cgal<Epick>(p[0]), to_cgal<Epick>(p[1]), to_cgal<Epick>(p[2]), plane));
       ASSERT_EQ(got, epeck) << describe(p) << " plane " << static_cast<int>(plane);
       ASSERT_EQ(got, epick) << describe(p) << " plane " << static_cast<int>(plane);
     }

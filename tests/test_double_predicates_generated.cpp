@@ -59,10 +59,10 @@ struct Tally {
     for (int s = 0; s < kStages; ++s) stage[s] += t.stage[s];
   }
   void print(const std::string& what) const {
-    std::printf("[ stats    ] %-28s %8ld cases: exact zero %7ld, naive double wrong %7ld; "
-                "stages (documented thresholds): trivial %ld, filter %ld, expansion %ld, gmp %ld\n",
-                what.c_str(), cases, zero, naive_wrong, stage[kTrivial], stage[kFilter],
-                stage[kExpansion], stage[kGmp]);
+    std::printf(
+        "[ stats    ] %-28s %8ld cases: exact zero %7ld, naive double wrong %7ld; "
+        "stages (documented thresholds): trivial %ld, filter %ld, expansion %ld, gmp %ld\n",
+        what.c_str(), cases, zero, naive_wrong, stage[kTrivial], stage[kFilter], stage[kExpansion], stage[kGmp]);
   }
 };
 Tally g_total3, g_total2;
@@ -82,9 +82,12 @@ constexpr int kMaxReportedFailures = 10;
 // coordinate is unrelated junk, so reading the wrong axes shows up as wrong signs.
 Pt<3> embed(const Pt<2>& q, Plane plane, double junk) {
   switch (plane) {
-    case Plane::XY: return {q[0], q[1], junk};
-    case Plane::YZ: return {junk, q[0], q[1]};
-    case Plane::ZX: return {q[1], junk, q[0]};
+    case Plane::XY:
+      return {q[0], q[1], junk};
+    case Plane::YZ:
+      return {junk, q[0], q[1]};
+    case Plane::ZX:
+      return {q[1], junk, q[0]};
   }
   return {};
 }
@@ -141,8 +144,8 @@ TEST_P(GeneratedCases, Orient2dMatchesExactRationalSignOnEveryPlane) {
       const int got3 = sign_of(tritri::orient2d(q[0], q[1], q[2], plane));
       if (got3 != want) {
         ++failures;
-        ADD_FAILURE() << "orient2d on plane " << static_cast<int>(plane) << " of " << describe(p)
-                      << " = " << got3 << ", exact " << want;
+        ADD_FAILURE() << "orient2d on plane " << static_cast<int>(plane) << " of " << describe(p) << " = " << got3
+                      << ", exact " << want;
       }
     }
   }

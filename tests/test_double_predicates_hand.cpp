@@ -46,8 +46,7 @@ TEST(PredicateRegressions, NearlyCollinearGridWhereNaiveOrient2dFails) {
       ASSERT_EQ(want, (j > i) - (j < i)) << describe(p);  // a is above the line y = x iff j > i
       naive_wrong += naive_sign(naive_det(p)) != want;
       ASSERT_EQ(sign_of(tritri_sign(p)), want) << describe(p);
-      ASSERT_EQ(sign_of(tritri::orient2d(Pt<3>{p[0][0], p[0][1], 1}, Pt<3>{12, 12, 2},
-                                          Pt<3>{24, 24, 3}, Plane::XY)),
+      ASSERT_EQ(sign_of(tritri::orient2d(Pt<3>{p[0][0], p[0][1], 1}, Pt<3>{12, 12, 2}, Pt<3>{24, 24, 3}, Plane::XY)),
                 want);
     }
   EXPECT_GT(naive_wrong, 1000);  // the construction really is beyond plain doubles
@@ -59,8 +58,8 @@ TEST(PredicateRegressions, NearlyCoplanarGridWhereNaiveOrient3dFails) {
   int naive_wrong = 0;
   for (int i = 0; i < 128; ++i)
     for (int j = 0; j < 128; ++j) {
-      const Case<3> p = {Pt<3>{0.5 + i * u, 0.5 + j * u, 0.5 + (i ^ j) * u}, Pt<3>{12, 12, 0},
-                         Pt<3>{24, 24, 0}, Pt<3>{13, 13, 7}};
+      const Case<3> p = {Pt<3>{0.5 + i * u, 0.5 + j * u, 0.5 + (i ^ j) * u}, Pt<3>{12, 12, 0}, Pt<3>{24, 24, 0},
+                         Pt<3>{13, 13, 7}};
       const int want = exact_sign(p);
       naive_wrong += naive_sign(naive_det(p)) != want;
       ASSERT_EQ(want == 0, i == j) << describe(p);
@@ -71,8 +70,8 @@ TEST(PredicateRegressions, NearlyCoplanarGridWhereNaiveOrient3dFails) {
 
 // Products that underflow to zero in double, and differences that overflow.
 TEST(PredicateRegressions, TinyAndHugeTetrahedraHaveTheirExactSign) {
-  for (double m : {DBL_TRUE_MIN, 0x1p-1070, DBL_MIN, 0x1p-400, 0x1p-300, 0x1p-281, 0x1p-251,
-                   0x1p251, 0x1p281, 0x1p400, 0x1p700, DBL_MAX}) {
+  for (double m : {DBL_TRUE_MIN, 0x1p-1070, DBL_MIN, 0x1p-400, 0x1p-300, 0x1p-281, 0x1p-251, 0x1p251, 0x1p281, 0x1p400,
+                   0x1p700, DBL_MAX}) {
     const Pt<3> o{0, 0, 0}, x{m, 0, 0}, y{0, m, 0}, z{0, 0, m};
     EXPECT_EQ(tritri::orient3d(o, x, y, z), Sign::Positive) << m;
     EXPECT_EQ(tritri::orient3d(o, x, z, y), Sign::Negative) << m;
@@ -98,7 +97,8 @@ TEST(PredicateRegressions, MixedMagnitudesAcrossTheWholeExponentRange) {
       {Pt<3>{0, 0, 0}, Pt<3>{big, 0, 0}, Pt<3>{0, tiny, 0}, Pt<3>{0, 0, 1}},
       {Pt<3>{0, 0, 0}, Pt<3>{big, tiny, 0}, Pt<3>{big, 0, 0}, Pt<3>{1, 1, tiny}},
       {Pt<3>{1, 1, 1}, Pt<3>{big, 1, 1}, Pt<3>{1, std::nextafter(1.0, 2.0), 1}, Pt<3>{1, 1, std::nextafter(1.0, 0.0)}},
-      {Pt<3>{0x1p-280, 0x1p280, 0}, Pt<3>{0x1p-281, 0x1p280, 0x1p-290}, Pt<3>{0, 0x1p281, 1}, Pt<3>{0x1p-279, 0, 0x1p279}},
+      {Pt<3>{0x1p-280, 0x1p280, 0}, Pt<3>{0x1p-281, 0x1p280, 0x1p-290}, Pt<3>{0, 0x1p281, 1},
+       Pt<3>{0x1p-279, 0, 0x1p279}},
       {Pt<3>{-big, big, 0}, Pt<3>{big, -big, 0}, Pt<3>{tiny, -tiny, tiny}, Pt<3>{0, 0, -tiny}},
   };
   for (const auto& p : cases) {

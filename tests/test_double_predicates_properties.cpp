@@ -72,8 +72,10 @@ bool transform_exactly(const Case<N>& p, Case<N>& out, F f, FExact f_exact) {
 
 mpq_class times_power_of_two(const mpq_class& x, int e) {
   mpq_class y = x;
-  if (e >= 0) mpq_mul_2exp(y.get_mpq_t(), y.get_mpq_t(), static_cast<unsigned long>(e));
-  else mpq_div_2exp(y.get_mpq_t(), y.get_mpq_t(), static_cast<unsigned long>(-e));
+  if (e >= 0)
+    mpq_mul_2exp(y.get_mpq_t(), y.get_mpq_t(), static_cast<unsigned long>(e));
+  else
+    mpq_div_2exp(y.get_mpq_t(), y.get_mpq_t(), static_cast<unsigned long>(-e));
   return y;
 }
 
@@ -130,8 +132,8 @@ void check_exact_transformations(Rng& r, long n) {
   // The generators must leave enough exact cases for the last two checks to mean something.
   EXPECT_GT(scaled_checked, n / 10);
   EXPECT_GT(translated_checked, n / 20);
-  std::printf("[ stats    ] exact scalings checked %ld, exact translations checked %ld of %ld\n",
-              scaled_checked, translated_checked, n);
+  std::printf("[ stats    ] exact scalings checked %ld, exact translations checked %ld of %ld\n", scaled_checked,
+              translated_checked, n);
 }
 
 TEST(Orient3dProperties, ExactNegationsAxisSwapsScalingsAndTranslationsActAsExpected) {

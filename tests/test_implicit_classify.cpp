@@ -99,9 +99,9 @@ class PairPicker {
       tritri_test::shuffle(ids.data(), 3, rng_);
       const bool distinct = ids[0] != ids[1] && ids[1] != ids[2] && ids[0] != ids[2];
       // Collinear and repeated vertices make degenerate triangles: keep a few of them.
-      const bool proper = distinct && !tritri_test::collinear(b_.soup.points[ids[0]].exact,
-                                                                b_.soup.points[ids[1]].exact,
-                                                                b_.soup.points[ids[2]].exact);
+      const bool proper =
+          distinct && !tritri_test::collinear(b_.soup.points[ids[0]].exact, b_.soup.points[ids[1]].exact,
+                                              b_.soup.points[ids[2]].exact);
       if (proper || attempt >= 20 || rng_.percent(3)) return {vertex(ids[0]), vertex(ids[1]), vertex(ids[2])};
     }
   }
@@ -193,17 +193,17 @@ TEST(ImplicitClassify, SubTrianglesOfASoupMatchTheExactRationalKernel) {
       auto P = [&](const Vertex& v) -> const ImplicitPoint& { return b.reps[v.id][v.rep]; };
       auto E = [&](const Vertex& v) -> const ExactPoint& { return b.exact[v.id]; };
       const Result got = tritri::classify<tritri::ImplicitKernel>(P(A[0]), P(A[1]), P(A[2]), P(B[0]), P(B[1]), P(B[2]));
-      const Result expected = tritri::classify<tritri::CgalKernel<RationalKernel>>(E(A[0]), E(A[1]), E(A[2]), E(B[0]),
-                                                                                 E(B[1]), E(B[2]));
+      const Result expected =
+          tritri::classify<tritri::CgalKernel<RationalKernel>>(E(A[0]), E(A[1]), E(A[2]), E(B[0]), E(B[1]), E(B[2]));
       coplanar += expected.coplanar;
       degenerate += expected.degenerate;
       for (const auto& p : expected.points) ++types[static_cast<int>(p.type)];
       for (const Vertex& va : A)
-        for (const Vertex& vb : B)
-          mixed_kinds += va.id == vb.id && P(va).kind() != P(vb).kind();
+        for (const Vertex& vb : B) mixed_kinds += va.id == vb.id && P(va).kind() != P(vb).kind();
       if (!(got == expected) && ++failures <= kMaxReports)
         ADD_FAILURE() << "classify<ImplicitKernel> " << got << "\n  exact rationals    " << expected << "\n  A:\n"
-                      << describe_tri(b, A) << "  B:\n" << describe_tri(b, B);
+                      << describe_tri(b, A) << "  B:\n"
+                      << describe_tri(b, B);
     }
   }
   std::cout << "[ cases    ] " << pairs << " pairs: " << coplanar << " coplanar, " << degenerate << " degenerate, "
@@ -214,7 +214,8 @@ TEST(ImplicitClassify, SubTrianglesOfASoupMatchTheExactRationalKernel) {
   EXPECT_EQ(rejected_reps, 0);
   EXPECT_GT(coplanar, pairs / 10);
   EXPECT_GT(mixed_kinds, pairs / 10);
-  for (int t = 0; t < 8; ++t) EXPECT_GT(types[t], 0) << tritri::to_string(static_cast<tritri::Type>(t)) << " never expected";
+  for (int t = 0; t < 8; ++t)
+    EXPECT_GT(types[t], 0) << tritri::to_string(static_cast<tritri::Type>(t)) << " never expected";
 }
 
 TEST(ImplicitClassify, ExplicitPointsMatchTheDoubleKernel) {
@@ -224,12 +225,24 @@ TEST(ImplicitClassify, ExplicitPointsMatchTheDoubleKernel) {
   for (long long n = 0; n < target; ++n) {
     tritri_test::Pair p;
     switch (rng.uniform(0, 5)) {
-      case 0: p = tritri_test::gen_structured(rng); break;
-      case 1: p = tritri_test::gen_perturbed(rng); break;
-      case 2: p = tritri_test::gen_scaled(rng); break;
-      case 3: p = tritri_test::gen_edges_crossing_at_point(rng); break;
-      case 4: p = tritri_test::gen_random_near(rng); break;
-      default: p = tritri_test::gen_random(rng); break;
+      case 0:
+        p = tritri_test::gen_structured(rng);
+        break;
+      case 1:
+        p = tritri_test::gen_perturbed(rng);
+        break;
+      case 2:
+        p = tritri_test::gen_scaled(rng);
+        break;
+      case 3:
+        p = tritri_test::gen_edges_crossing_at_point(rng);
+        break;
+      case 4:
+        p = tritri_test::gen_random_near(rng);
+        break;
+      default:
+        p = tritri_test::gen_random(rng);
+        break;
     }
     p = tritri_test::random_symmetry(p, rng);
     std::array<ImplicitPoint, 6> e;

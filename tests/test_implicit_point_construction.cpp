@@ -128,7 +128,8 @@ TEST(ImplicitPoint, GeneratedPointsAreDefinedExactlyWhenTheReferenceSaysSo) {
       if (++failures <= kMaxReports) ADD_FAILURE() << "undefined point accepted: " << tritri_test::describe(r);
     for (const auto& p : s.points)
       if (p.point.kind() != p.recipe.kind && ++failures <= kMaxReports)
-        ADD_FAILURE() << "kind " << tritri_test::kind_name(p.point.kind()) << " for " << tritri_test::describe(p.recipe);
+        ADD_FAILURE() << "kind " << tritri_test::kind_name(p.point.kind()) << " for "
+                      << tritri_test::describe(p.recipe);
     return 1;
   });
   std::cout << "[ cases    ] " << points << " defined points built, " << refused << " undefined refused\n";
@@ -148,8 +149,8 @@ TEST(ImplicitPoint, ToExactIsTheExactPointAndToDoubleItsNearestDouble) {
         const bool double_ok = is_nearest_double(d[k], p.exact[k]);
         if ((!exact_ok || !double_ok) && ++failures <= kMaxReports)
           ADD_FAILURE() << "coordinate " << k << " of " << tritri_test::describe(p.recipe) << "\n  reference "
-                        << p.exact[k].get_str() << "\n  to_exact  " << e[k].get_str()
-                        << "\n  to_double " << std::hexfloat << d[k] << (double_ok ? "" : " (not the nearest double)");
+                        << p.exact[k].get_str() << "\n  to_exact  " << e[k].get_str() << "\n  to_double "
+                        << std::hexfloat << d[k] << (double_ok ? "" : " (not the nearest double)");
       }
     }
     return 1;
@@ -157,6 +158,5 @@ TEST(ImplicitPoint, ToExactIsTheExactPointAndToDoubleItsNearestDouble) {
   std::cout << "[ cases    ] " << points << " points\n";
   EXPECT_EQ(failures, 0);
 }
-
 
 }  // namespace

@@ -140,7 +140,8 @@ TEST(ImplicitPoint, UndefinedTpiIsRefused) {
   auto plane = [&] {
     for (;;) {
       Triple t{grid_point(rng), grid_point(rng), grid_point(rng)};
-      if (!tritri_test::is_zero(tritri_test::cross_d(tritri_test::sub(t[1], t[0]), tritri_test::sub(t[2], t[0])))) return t;
+      if (!tritri_test::is_zero(tritri_test::cross_d(tritri_test::sub(t[1], t[0]), tritri_test::sub(t[2], t[0]))))
+        return t;
     }
   };
   for (long long n = tritri_test::scaled_count(20000); n > 0; --n) {
@@ -262,6 +263,5 @@ TEST(ImplicitPoint, ImplicitArgumentsThrowInvalidArgument) {
           << "position " << pos;
     }
 }
-
 
 }  // namespace

@@ -61,7 +61,7 @@ TEST(ImplicitPredicates, Orient3dMatchesExactReference) {
     long long n = 0;
     for (; n < 200 && n < left; ++n) {
       int idx[4] = {pick.any(), pick.any(), pick.any(), pick.any()};  // a group may overwrite some
-      bool degenerate = true;  // zero by construction
+      bool degenerate = true;                                         // zero by construction
       switch (rng.uniform(0, 5)) {
         case 0:
         case 1:  // four points on one plane
@@ -77,7 +77,9 @@ TEST(ImplicitPredicates, Orient3dMatchesExactReference) {
           degenerate = false;
           pick.from_group(GroupKind::Coplanar, 3, 0, idx);
           break;
-        default: degenerate = false; break;
+        default:
+          degenerate = false;
+          break;
       }
       if (!degenerate && rng.percent(50))
         for (int& i : idx) i = pick.any();
@@ -93,7 +95,8 @@ TEST(ImplicitPredicates, Orient3dMatchesExactReference) {
       if (degenerate && expected != 0)
         ADD_FAILURE() << "generator: a degenerate-by-construction case is not degenerate\n" << operands(s, idx, 4);
       if (got != expected && ++failures <= kMaxReports)
-        ADD_FAILURE() << "orient3d(a, b, c, d): expected " << expected << ", got " << got << "\n" << operands(s, idx, 4);
+        ADD_FAILURE() << "orient3d(a, b, c, d): expected " << expected << ", got " << got << "\n"
+                      << operands(s, idx, 4);
     }
     cases += n;
     return n;
@@ -133,7 +136,9 @@ TEST(ImplicitPredicates, Orient2dMatchesExactReferenceInEveryProjection) {
           degenerate = false;
           pick.from_group(GroupKind::Coplanar, 3, 0, idx);
           break;
-        default: degenerate = false; break;
+        default:
+          degenerate = false;
+          break;
       }
       if (!degenerate && rng.percent(50))
         for (int& i : idx) i = pick.any();
@@ -149,18 +154,18 @@ TEST(ImplicitPredicates, Orient2dMatchesExactReferenceInEveryProjection) {
       if (degenerate && expected != 0)
         ADD_FAILURE() << "generator: a degenerate-by-construction case is not degenerate\n" << operands(s, idx, 3);
       if (got != expected && ++failures <= kMaxReports)
-        ADD_FAILURE() << "orient2d(a, b, c, " << plane_name(pl) << "): expected " << expected << ", got " << got
-                      << "\n" << operands(s, idx, 3);
+        ADD_FAILURE() << "orient2d(a, b, c, " << plane_name(pl) << "): expected " << expected << ", got " << got << "\n"
+                      << operands(s, idx, 3);
       // The same with cached offset points, about the approximation of a scene point (any
       // explicit origin is valid; near ones make the filter decide more).
       const auto origin = P[pick.any()].point.approx();
-      const int got_offset =
-          sign_of(tritri::orient2d(tritri::offset_point(P[idx[0]].point, origin),
-                                   tritri::offset_point(P[idx[1]].point, origin),
-                                   tritri::offset_point(P[idx[2]].point, origin), pl));
+      const int got_offset = sign_of(tritri::orient2d(tritri::offset_point(P[idx[0]].point, origin),
+                                                      tritri::offset_point(P[idx[1]].point, origin),
+                                                      tritri::offset_point(P[idx[2]].point, origin), pl));
       if (got_offset != expected && ++failures <= kMaxReports)
         ADD_FAILURE() << "orient2d(OffsetPoint a, b, c, " << plane_name(pl) << "): expected " << expected << ", got "
-                      << got_offset << "\n" << operands(s, idx, 3);
+                      << got_offset << "\n"
+                      << operands(s, idx, 3);
     }
     cases += n;
     return n;
@@ -184,10 +189,17 @@ TEST(ImplicitPredicates, EqualAndLessMatchExactReference) {
       int idx[2] = {pick.any(), pick.any()};
       switch (rng.uniform(0, 5)) {  // a group member when there is one, else the random pair
         case 0:
-        case 1: pick.from_group(GroupKind::Coincident, 2, 0, idx); break;
-        case 2: pick.from_group(GroupKind::Coplanar, 2, 0, idx); break;  // ties on axis planes
-        case 3: pick.from_group(GroupKind::Collinear, 2, 0, idx); break;  // ties on axis lines
-        default: break;
+        case 1:
+          pick.from_group(GroupKind::Coincident, 2, 0, idx);
+          break;
+        case 2:
+          pick.from_group(GroupKind::Coplanar, 2, 0, idx);
+          break;  // ties on axis planes
+        case 3:
+          pick.from_group(GroupKind::Collinear, 2, 0, idx);
+          break;  // ties on axis lines
+        default:
+          break;
       }
       const auto& a = s.points[idx[0]];
       const auto& b = s.points[idx[1]];
@@ -199,7 +211,8 @@ TEST(ImplicitPredicates, EqualAndLessMatchExactReference) {
                  ba = tritri::less(b.point, a.point);
       if ((eq != (expected == 0) || ab != (expected < 0) || ba != (expected > 0)) && ++failures <= kMaxReports)
         ADD_FAILURE() << "exact comparison " << expected << ", got equal(a, b) = " << eq << ", less(a, b) = " << ab
-                      << ", less(b, a) = " << ba << "\n" << operands(s, idx, 2);
+                      << ", less(b, a) = " << ba << "\n"
+                      << operands(s, idx, 2);
     }
     pairs += n;
     return n;
@@ -253,8 +266,8 @@ TEST(ImplicitPredicates, OnePointBuiltSeveralWaysIsOnePoint) {
           ++cases;
           if ((sp != expected || sq != expected) && ++failures <= kMaxReports)
             ADD_FAILURE() << "orient3d with the point as operand " << pos << " in two ways: expected " << expected
-                          << ", got " << sp << " and " << sq << "\n" << operands(s, kp, 4) << "\n  other way: "
-                          << tritri_test::describe(q.recipe);
+                          << ", got " << sp << " and " << sq << "\n"
+                          << operands(s, kp, 4) << "\n  other way: " << tritri_test::describe(q.recipe);
           // orient2d with two others, each projection.
           for (Plane pl : kPlanes) {
             int k2p[3] = {pick.any(), pick.any(), m[i]};
@@ -295,6 +308,5 @@ TEST(ImplicitPredicates, StatsCountFilterAndExactStages) {
   EXPECT_EQ(tritri::orient3d(R, S, T, far), Sign::Positive);
   EXPECT_EQ(stats.filtered, before.filtered + 1);
 }
-
 
 }  // namespace

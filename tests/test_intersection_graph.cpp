@@ -97,71 +97,71 @@ std::set<Exact> reference_points(const std::vector<Vec3>& V, const std::vector<T
 }
 
 void expect_matches_reference(const TriangleSoup& input, const std::string& name) {
- for (Classifier classifier : {Classifier::Native, Classifier::Tritri}) {
-  const std::string what = name + (classifier == Classifier::Native ? " (native)" : " (tritri)");
-  PreprocessStats stats;
-  const TriangleSoup soup = preprocess(input, PreprocessOptions{}, stats);
-  const auto& V = soup.vertices;
-  const auto& F = soup.triangles;
-  const auto records = classify_pairs(V, F, candidate_pairs(V, F), classifier);
-  IntersectionGraph g = build_intersection_graph(V, F, records);
+  for (Classifier classifier : {Classifier::Native, Classifier::Tritri}) {
+    const std::string what = name + (classifier == Classifier::Native ? " (native)" : " (tritri)");
+    PreprocessStats stats;
+    const TriangleSoup soup = preprocess(input, PreprocessOptions{}, stats);
+    const auto& V = soup.vertices;
+    const auto& F = soup.triangles;
+    const auto records = classify_pairs(V, F, candidate_pairs(V, F), classifier);
+    IntersectionGraph g = build_intersection_graph(V, F, records);
 
-  std::size_t reference_pairs = 0;
-  std::vector<std::set<ExactSegment>> expected_segments;
-  const std::set<Exact> expected = reference_points(V, F, reference_pairs, expected_segments);
-  // Per triangle, the constraint segments: its own, plus segments that coplanar sharing
-  // copied from a coplanar partner (each one is that partner's own segment).
-  for (std::size_t t = 0; t < F.size(); ++t) {
-    std::set<ExactSegment> got_segments;
-    for (const auto& seg : g.triangle_segments[t])
-      got_segments.insert(std::minmax(exact(g.points[seg[0]]), exact(g.points[seg[1]])));
-    for (const ExactSegment& seg : expected_segments[t])
-      EXPECT_EQ(got_segments.count(seg), 1u) << what << " triangle " << t << ": a segment is missing";
-    for (const ExactSegment& seg : got_segments) {
-      if (expected_segments[t].count(seg)) continue;
-      bool from_partner = false;
-      for (int u : g.coplanar_partners[t]) from_partner = from_partner || expected_segments[u].count(seg) > 0;
-      EXPECT_TRUE(from_partner) << what << " triangle " << t << ": a segment of no coplanar partner";
+    std::size_t reference_pairs = 0;
+    std::vector<std::set<ExactSegment>> expected_segments;
+    const std::set<Exact> expected = reference_points(V, F, reference_pairs, expected_segments);
+    // Per triangle, the constraint segments: its own, plus segments that coplanar sharing
+    // copied from a coplanar partner (each one is that partner's own segment).
+    for (std::size_t t = 0; t < F.size(); ++t) {
+      std::set<ExactSegment> got_segments;
+      for (const auto& seg : g.triangle_segments[t])
+        got_segments.insert(std::minmax(exact(g.points[seg[0]]), exact(g.points[seg[1]])));
+      for (const ExactSegment& seg : expected_segments[t])
+        EXPECT_EQ(got_segments.count(seg), 1u) << what << " triangle " << t << ": a segment is missing";
+      for (const ExactSegment& seg : got_segments) {
+        if (expected_segments[t].count(seg)) continue;
+        bool from_partner = false;
+        for (int u : g.coplanar_partners[t]) from_partner = from_partner || expected_segments[u].count(seg) > 0;
+        EXPECT_TRUE(from_partner) << what << " triangle " << t << ": a segment of no coplanar partner";
+      }
     }
-  }
-  std::set<Exact> got;
-  for (const auto& rec : records)
-    for (const auto& p : rec.points) {
-      const int id = p.vertex >= 0 ? p.vertex : -1;
-      if (id >= 0) got.insert(exact(g.points[id]));
-    }
-  // New points: every point of the graph beyond the input vertices.
-  for (std::size_t i = V.size(); i < g.points.size(); ++i) got.insert(exact(g.points[i]));
-  EXPECT_EQ(reference_pairs, g.intersecting_pairs) << what;
-  EXPECT_EQ(expected.size(), got.size()) << what;
-  EXPECT_TRUE(expected == got) << what;
+    std::set<Exact> got;
+    for (const auto& rec : records)
+      for (const auto& p : rec.points) {
+        const int id = p.vertex >= 0 ? p.vertex : -1;
+        if (id >= 0) got.insert(exact(g.points[id]));
+      }
+    // New points: every point of the graph beyond the input vertices.
+    for (std::size_t i = V.size(); i < g.points.size(); ++i) got.insert(exact(g.points[i]));
+    EXPECT_EQ(reference_pairs, g.intersecting_pairs) << what;
+    EXPECT_EQ(expected.size(), got.size()) << what;
+    EXPECT_TRUE(expected == got) << what;
 
-  // New points are pairwise distinct and distinct from every input vertex (exact dedup).
-  std::set<Exact> vertices;
-  for (const Vec3& v : V) vertices.insert(exact(v));
-  std::set<Exact> fresh;
-  for (std::size_t i = V.size(); i < g.points.size(); ++i) {
-    const Exact e = exact(g.points[i]);
-    EXPECT_EQ(vertices.count(e), 0u) << what;
-    EXPECT_TRUE(fresh.insert(e).second) << what;
-  }
-  // Every recorded point lies where it is recorded: inside its triangle or edge.
-  for (std::size_t t = 0; t < F.size(); ++t) {
-    const EK::Triangle_3 tri(ep(V[F[t][0]]), ep(V[F[t][1]]), ep(V[F[t][2]]));
-    for (int x : g.triangle_points[t]) {
-      const EP p = tritri_test::to_cgal<EK>(exact(g.points[x]));
-      EXPECT_TRUE(tri.has_on(p)) << what << " triangle " << t;
-      for (int k = 0; k < 3; ++k)
-        EXPECT_FALSE(EK::Segment_3(tri.vertex(k), tri.vertex((k + 1) % 3)).has_on(p)) << what;
+    // New points are pairwise distinct and distinct from every input vertex (exact dedup).
+    std::set<Exact> vertices;
+    for (const Vec3& v : V) vertices.insert(exact(v));
+    std::set<Exact> fresh;
+    for (std::size_t i = V.size(); i < g.points.size(); ++i) {
+      const Exact e = exact(g.points[i]);
+      EXPECT_EQ(vertices.count(e), 0u) << what;
+      EXPECT_TRUE(fresh.insert(e).second) << what;
     }
-  }
-  for (std::size_t e = 0; e < g.edges.size(); ++e)
-    for (int x : g.edge_points[e]) {
-      const EP p = tritri_test::to_cgal<EK>(exact(g.points[x]));
-      const EP a = ep(V[g.edges[e][0]]), b = ep(V[g.edges[e][1]]);
-      EXPECT_TRUE(EK::Segment_3(a, b).has_on(p) && p != a && p != b) << what << " edge " << e;
+    // Every recorded point lies where it is recorded: inside its triangle or edge.
+    for (std::size_t t = 0; t < F.size(); ++t) {
+      const EK::Triangle_3 tri(ep(V[F[t][0]]), ep(V[F[t][1]]), ep(V[F[t][2]]));
+      for (int x : g.triangle_points[t]) {
+        const EP p = tritri_test::to_cgal<EK>(exact(g.points[x]));
+        EXPECT_TRUE(tri.has_on(p)) << what << " triangle " << t;
+        for (int k = 0; k < 3; ++k)
+          EXPECT_FALSE(EK::Segment_3(tri.vertex(k), tri.vertex((k + 1) % 3)).has_on(p)) << what;
+      }
     }
- }
+    for (std::size_t e = 0; e < g.edges.size(); ++e)
+      for (int x : g.edge_points[e]) {
+        const EP p = tritri_test::to_cgal<EK>(exact(g.points[x]));
+        const EP a = ep(V[g.edges[e][0]]), b = ep(V[g.edges[e][1]]);
+        EXPECT_TRUE(EK::Segment_3(a, b).has_on(p) && p != a && p != b) << what << " edge " << e;
+      }
+  }
 }
 
 TEST(IntersectionGraph, TwoSpheres) {
@@ -170,8 +170,7 @@ TEST(IntersectionGraph, TwoSpheres) {
 }
 
 TEST(IntersectionGraph, CubeThroughCube) {
-  expect_matches_reference(concatenate(box({0, 0, 0}, {2, 2, 2}), box({1, -1, 0.5}, {3, 3, 1.5})),
-                           "cube through cube");
+  expect_matches_reference(concatenate(box({0, 0, 0}, {2, 2, 2}), box({1, -1, 0.5}, {3, 3, 1.5})), "cube through cube");
 }
 
 TEST(IntersectionGraph, CoplanarOverlappingGrids) {
@@ -230,8 +229,8 @@ TEST(IntersectionGraph, EverySharedMeshLoadsAndClassifies) {
     }
     PreprocessStats stats;
     const TriangleSoup soup = preprocess(input, PreprocessOptions{}, stats);
-    const auto records =
-        classify_pairs(soup.vertices, soup.triangles, candidate_pairs(soup.vertices, soup.triangles), Classifier::Native);
+    const auto records = classify_pairs(soup.vertices, soup.triangles, candidate_pairs(soup.vertices, soup.triangles),
+                                        Classifier::Native);
     IntersectionGraph g = build_intersection_graph(soup.vertices, soup.triangles, records);
     EXPECT_EQ(g.intersecting_pairs, records.size()) << entry.path();
     EXPECT_EQ(g.points.size(), soup.vertices.size() + g.new_points) << entry.path();

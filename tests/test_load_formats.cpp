@@ -55,11 +55,13 @@ const std::vector<Vec3> kTriangle = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
 
 const char* kObj = "# c\nv 0 0 0\nv 1 0 0\n\nv 0 1 0\nf 1 2 3\n";
 const char* kOff = "OFF\n# c\n3 1 0\n0 0 0\n1 0 0\n\n0 1 0\n3 0 1 2\n";
-const char* kStl = "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n"
-                   "endfacet\nendsolid s\n";
-const char* kPly = "ply\nformat ascii 1.0\ncomment c\nelement vertex 3\nproperty float x\nproperty float y\n"
-                   "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                   "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+const char* kStl =
+    "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n"
+    "endfacet\nendsolid s\n";
+const char* kPly =
+    "ply\nformat ascii 1.0\ncomment c\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
 
 TEST(LoadFormats, TextFormatsAcceptLfCrlfAndCrLineEndsAndAByteOrderMark) {
   TempDir dir;
@@ -129,10 +131,22 @@ TEST(LoadFormats, StlMergesMinusZeroWithZeroKeepingTheFirstAppearance) {
 
 TEST(LoadFormats, DecimalsAreRoundedLikeStrtodAlsoSubnormalsAndUnderflowToZero) {
   TempDir dir;
-  const std::vector<std::string> tokens = {
-      "0.1", "-1e-300", "4e-320", "1e-400", "-1e-400", "2.4703282292062327e-324", "2.4703282292062328e-324",
-      "2.2250738585072011e-308", "2.2250738585072012e-308", "1.7976931348623157e308", "+7", ".5", "5.",
-      "9007199254740993", "1E2", "0.30000000000000004441"};
+  const std::vector<std::string> tokens = {"0.1",
+                                           "-1e-300",
+                                           "4e-320",
+                                           "1e-400",
+                                           "-1e-400",
+                                           "2.4703282292062327e-324",
+                                           "2.4703282292062328e-324",
+                                           "2.2250738585072011e-308",
+                                           "2.2250738585072012e-308",
+                                           "1.7976931348623157e308",
+                                           "+7",
+                                           ".5",
+                                           "5.",
+                                           "9007199254740993",
+                                           "1E2",
+                                           "0.30000000000000004441"};
   std::string obj;
   for (const std::string& t : tokens) obj += "v " + t + " 0 0\n";
   obj += "f 1 2 3\n";
@@ -228,8 +242,8 @@ std::string binary_ply(bool big, const char* count_type, const char* index_type,
     for (int i : face) f += integer(i, index_size);
     f += bytes_of<float>(NAN, big);  // not a coordinate: skipped
   }
-  f += bytes_of<std::int32_t>(-5, big) + bytes_of<std::uint8_t>(2) + bytes_of<double>(1, big) +
-       bytes_of<double>(2, big);
+  f +=
+      bytes_of<std::int32_t>(-5, big) + bytes_of<std::uint8_t>(2) + bytes_of<double>(1, big) + bytes_of<double>(2, big);
   for (const Vec3& v : std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5}, {0, 1, -0.25}})
     f += bytes_of<double>(v[0], big) + bytes_of<float>(static_cast<float>(v[1]), big) + bytes_of<double>(v[2], big);
   return f;

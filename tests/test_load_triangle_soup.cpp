@@ -151,8 +151,7 @@ TEST(LoadTriangleSoup, ReadsColouredAndNormalOffVariants) {
                                      "COFF\n4 2 0\n0 0 0\n1 0 0 0 255 0 255\n0 1 0 0 0 255\n1 1 0 1 2 3\n"
                                      "3 0 1 2 0.5 0.25 1\n3 3 2 1 9 9 9\n");
   EXPECT_EQ(load_triangle_soup(coff).triangles, (std::vector<Tri>{{0, 1, 2}, {3, 2, 1}}));
-  const std::string colours_stop = dir.write("d.off",
-                                             "COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0\n0 1 0 0 0 255\n3 0 1 2\n");
+  const std::string colours_stop = dir.write("d.off", "COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0\n0 1 0 0 0 255\n3 0 1 2\n");
   EXPECT_THROW(load_triangle_soup(colours_stop), InputError);
   const std::string noff = dir.write("n.off", "NOFF 3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 2 1 0\n");
   const TriangleSoup s = load_triangle_soup(noff);
@@ -226,10 +225,11 @@ TEST(LoadTriangleSoup, ExtensionDecidesTheFormatInAnyCase) {
   EXPECT_EQ(load_triangle_soup(dir.write("x.OBJ", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).triangles.size(), 1u);
   EXPECT_EQ(load_triangle_soup(dir.write("x.Off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")).triangles.size(), 1u);
   EXPECT_EQ(load_triangle_soup(dir.write("x.StL", binary_stl("", {{0, 0, 0, 1, 0, 0, 0, 1, 0}}))).triangles.size(), 1u);
-  EXPECT_EQ(load_triangle_soup(dir.write("x.PLY", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-                                                  "property float y\nproperty float z\nelement face 1\n"
-                                                  "property list uchar int vertex_index\nend_header\n"
-                                                  "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"))
+  EXPECT_EQ(load_triangle_soup(dir.write("x.PLY",
+                                         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                         "property float y\nproperty float z\nelement face 1\n"
+                                         "property list uchar int vertex_index\nend_header\n"
+                                         "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"))
                 .triangles.size(),
             1u);
   // An OBJ file named .off is read as OFF, and refused.
@@ -370,12 +370,14 @@ TEST(LoadTriangleSoup, EveryTruncationAndByteCorruptionOfValidFilesLoadsOrIsRefu
   const std::vector<std::pair<std::string, std::string>> valid = {
       {"v.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\nf 1 2 3\nf -1 -3 -2\nf 1/1 2/2 4/4 3/3\n"},
       {"v.off", "COFF\n4 2 0\n0 0 0 1 0 0\n1 0 0 1 0 0\n0 1 0 1 0 0\n1 1 1 1 0 0\n3 0 1 2\n4 0 1 3 2 0 0 1\n"},
-      {"v.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n"
-                "endfacet\nendsolid s\n"},
+      {"v.stl",
+       "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n"
+       "endfacet\nendsolid s\n"},
       {"b.stl", binary_stl("solid", {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {1, 1, 1, 1, 0, 0, 0, 1, 0}})},
-      {"v.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
-                "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n"
-                "3 0 1 2\n3 3 1 2\n"},
+      {"v.ply",
+       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+       "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n"
+       "3 0 1 2\n3 3 1 2\n"},
       {"b.ply", ply_binary},
   };
   std::mt19937 rng(12345);

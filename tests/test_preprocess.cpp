@@ -61,13 +61,13 @@ std::vector<LabelSet> labels_of(const TriangleSoup& s) {
 
 TEST(Preprocess, MergesIdenticalCoordinatesIncludingSignedZerosInFirstUseOrder) {
   const double one_plus_ulp = std::nextafter(1.0, 2.0);
-  const TriangleSoup in = make_soup({{-0.0, 0, -0.0},      // 0
-                                     {0, 1, 0},            // 1
-                                     {1, 0, 0},            // 2
-                                     {0.0, -0.0, 0.0},     // 3 == 0
-                                     {one_plus_ulp, 0, 0}, // 4 != 2
-                                     {0, 1, 0},            // 5 == 1
-                                     {7, 7, 7}},           // 6 unused
+  const TriangleSoup in = make_soup({{-0.0, 0, -0.0},       // 0
+                                     {0, 1, 0},             // 1
+                                     {1, 0, 0},             // 2
+                                     {0.0, -0.0, 0.0},      // 3 == 0
+                                     {one_plus_ulp, 0, 0},  // 4 != 2
+                                     {0, 1, 0},             // 5 == 1
+                                     {7, 7, 7}},            // 6 unused
                                     {{2, 5, 3}, {0, 4, 1}});
   PreprocessStats stats;
   const TriangleSoup out = preprocess(in, {}, stats);
@@ -88,13 +88,23 @@ TEST(Preprocess, RemovesExactlyTheTrianglesWithRepeatedOrCollinearCorners) {
   auto along = [&](double s) { return Vec3{a[0] + s * d[0], a[1] + s * d[1], a[2] + s * d[2]}; };  // exact
   const TriangleSoup in = make_soup(
       {
-          {0, 0, 0}, {1, 0, 0}, {0, 1, 0},                       // 0-2 a proper triangle
-          {0, 0, 0},                                             // 3 same position as 0
-          along(0), along(1), along(3),                          // 4-6 collinear in 3D
-          {0, 0, 0}, {1, 1, 1}, {2, 2, 2 + std::ldexp(1.0, -50)},  // 7-9 almost collinear
-          {0, 0, 0}, {1, 1, 0}, {2, 2, 1},                       // 10-12 collinear in XY only
-          {0, 0, 0}, {0, 0, 1}, {1, 0, 0},                       // 13-15 vertical: degenerate in XY
-          {5, 5, 5},                                             // 16 used by a degenerate triangle only
+          {0, 0, 0},
+          {1, 0, 0},
+          {0, 1, 0},  // 0-2 a proper triangle
+          {0, 0, 0},  // 3 same position as 0
+          along(0),
+          along(1),
+          along(3),  // 4-6 collinear in 3D
+          {0, 0, 0},
+          {1, 1, 1},
+          {2, 2, 2 + std::ldexp(1.0, -50)},  // 7-9 almost collinear
+          {0, 0, 0},
+          {1, 1, 0},
+          {2, 2, 1},  // 10-12 collinear in XY only
+          {0, 0, 0},
+          {0, 0, 1},
+          {1, 0, 0},  // 13-15 vertical: degenerate in XY
+          {5, 5, 5},  // 16 used by a degenerate triangle only
       },
       {{0, 1, 2}, {0, 1, 1}, {3, 1, 0}, {4, 5, 6}, {7, 8, 9}, {10, 11, 12}, {13, 14, 15}, {16, 16, 16}});
   PreprocessStats stats;
@@ -280,14 +290,14 @@ TEST(Preprocess, ScalingPutsTheLargestCoordinateInTwoToTheNineToTen) {
     int k;  // by hand: m = f 2^e, f in [1/2, 1), k = 10 - e
   };
   const Case cases[] = {
-      {0.3, 11},        // 0.3 = 0.6 * 2^-1
-      {3.0, 8},         // the upstream shift overflowed below ~5
-      {4.9, 7},         // 0.6125 * 2^3
-      {1000.0, 0},      // already in [512, 1024)
-      {1024.0, -1},     // 0.5 * 2^11
-      {512.0, 0},       // 0.5 * 2^10: already in range
-      {1e-300, 1006},   // 1e-300 = 0.6696... * 2^-996
-      {1e300, -987},    // 1e300 = 0.7466... * 2^997
+      {0.3, 11},                                              // 0.3 = 0.6 * 2^-1
+      {3.0, 8},                                               // the upstream shift overflowed below ~5
+      {4.9, 7},                                               // 0.6125 * 2^3
+      {1000.0, 0},                                            // already in [512, 1024)
+      {1024.0, -1},                                           // 0.5 * 2^11
+      {512.0, 0},                                             // 0.5 * 2^10: already in range
+      {1e-300, 1006},                                         // 1e-300 = 0.6696... * 2^-996
+      {1e300, -987},                                          // 1e300 = 0.7466... * 2^997
       {std::numeric_limits<double>::denorm_min() * 4, 1081},  // 2^-1072 = 0.5 * 2^-1071
   };
   for (const Case& c : cases) {
@@ -306,8 +316,7 @@ TEST(Preprocess, ScalingPutsTheLargestCoordinateInTwoToTheNineToTen) {
 TEST(Preprocess, ScalesTheSmallestSubnormalTriangleExactly) {
   const double tiny = std::numeric_limits<double>::denorm_min();  // 2^-1074
   PreprocessStats stats;
-  const TriangleSoup out =
-      preprocess(make_soup({{0, 0, 0}, {tiny, 0, 0}, {0, tiny, 0}}, {{0, 1, 2}}), {true}, stats);
+  const TriangleSoup out = preprocess(make_soup({{0, 0, 0}, {tiny, 0, 0}, {0, tiny, 0}}, {{0, 1, 2}}), {true}, stats);
   EXPECT_EQ(stats.removed_degenerate, 0u) << "orient2d is exact on subnormals";
   EXPECT_EQ(stats.scale_exponent, 1083);
   EXPECT_EQ(out.vertices, (std::vector<Vec3>{{0, 0, 0}, {512, 0, 0}, {0, 512, 0}}));

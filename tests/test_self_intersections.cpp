@@ -49,8 +49,7 @@ tritri::Result classify_rows(const Mesh& a, int i, const Mesh& b, int j) {
   auto p = [](const Mesh& m, int t, int c) {
     return tritri::DoubleKernel::Point{m.V(m.F(t, c), 0), m.V(m.F(t, c), 1), m.V(m.F(t, c), 2)};
   };
-  return tritri::classify<tritri::DoubleKernel>(p(a, i, 0), p(a, i, 1), p(a, i, 2), p(b, j, 0), p(b, j, 1),
-                                                p(b, j, 2));
+  return tritri::classify<tritri::DoubleKernel>(p(a, i, 0), p(a, i, 1), p(a, i, 2), p(b, j, 0), p(b, j, 1), p(b, j, 2));
 }
 
 // All pairs i < j, with the documented rule written out directly.
@@ -120,14 +119,14 @@ TEST(SelfIntersections, OneGridHasNoSelfIntersections) {
 
 TEST(SelfIntersections, RuleOnHandMadeCases) {
   Eigen::MatrixXd V(8, 3);
-  V << 0, 0, 0,  //
-      1, 0, 0,   //
-      0, 1, 0,   //
-      1, 1, 1,   // 3: with 1, 2 a neighbour of (0, 1, 2) across edge 1-2, bent up
+  V << 0, 0, 0,     //
+      1, 0, 0,      //
+      0, 1, 0,      //
+      1, 1, 1,      // 3: with 1, 2 a neighbour of (0, 1, 2) across edge 1-2, bent up
       0.2, 0.2, 0,  // 4: folds (1, 2, 4) back over (0, 1, 2)
-      0, 0, 0,   // 5: the coordinates of vertex 0 under another index
-      -1, 0, 0,  // 6
-      2, 0, 0;   // 7: (0, 1, 7) is degenerate (collinear)
+      0, 0, 0,      // 5: the coordinates of vertex 0 under another index
+      -1, 0, 0,     // 6
+      2, 0, 0;      // 7: (0, 1, 7) is degenerate (collinear)
   auto pairs_of = [&](const Eigen::MatrixXi& F) {
     std::vector<std::pair<int, int>> ij;
     for (const auto& p : tritri::self_intersections(V, F)) ij.emplace_back(p.i, p.j);
@@ -138,8 +137,8 @@ TEST(SelfIntersections, RuleOnHandMadeCases) {
   neighbours << 0, 1, 2, 2, 1, 3;
   fold << 0, 1, 2, 2, 1, 4;
   duplicate << 0, 1, 2, 2, 1, 0;
-  touch << 0, 1, 2, 5, 6, 3;      // meets (0, 1, 2) only at vertex 0's point, as vertex 5
-  corner << 0, 1, 2, 0, 6, 3;     // the same contact through the shared index 0
+  touch << 0, 1, 2, 5, 6, 3;   // meets (0, 1, 2) only at vertex 0's point, as vertex 5
+  corner << 0, 1, 2, 0, 6, 3;  // the same contact through the shared index 0
   degenerate << 0, 1, 2, 0, 1, 7;
   EXPECT_EQ(pairs_of(neighbours), Pairs{});
   EXPECT_EQ(pairs_of(fold), (Pairs{{0, 1}}));

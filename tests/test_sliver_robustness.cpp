@@ -191,11 +191,11 @@ TEST(SliverRobustness, SmallTrianglesAtAnyOffsetWidthAndAxisAreArrangedValidly) 
                   problem = std::string("refused: ") + e.what();
                 }
                 if (!problem.empty() && ++failures <= 5)
-                  ADD_FAILURE() << (classifier == Classifier::Tritri ? "tritri" : "native") << ": " << problem
-                                << "\n" << describe(soup);
+                  ADD_FAILURE() << (classifier == Classifier::Tritri ? "tritri" : "native") << ": " << problem << "\n"
+                                << describe(soup);
               }
   EXPECT_EQ(failures, 0) << "of " << cases << " soups";
-  EXPECT_GE(cases, 400);  // 4,752 at scale 1, 475 at the sanitizer run's 0.1
+  EXPECT_GE(cases, 400);                // 4,752 at scale 1, 475 at the sanitizer run's 0.1
   EXPECT_GE(with_output, cases / 2);    // most soups keep triangles after rounding
   EXPECT_GE(intersecting, cases / 10);  // and many have intersections to resolve
   std::printf("sliver soups: %d arranged and checked (%d with output, %d with intersections)\n", cases, with_output,
@@ -215,7 +215,8 @@ TEST(SliverRobustness, TheReportedFilesArrangeWithACleanCheck) {
   for (int i = 0; i < 2; ++i) {
     const std::string in = dir.write("in" + std::to_string(i) + ".obj", files[i]);
     const std::string out = dir.path("out" + std::to_string(i) + ".obj");
-    const auto r = tritri_test::run_command(std::string(ARRANGE_BIN) + " " + in + " -o " + out + " --check --stats 2>&1");
+    const auto r =
+        tritri_test::run_command(std::string(ARRANGE_BIN) + " " + in + " -o " + out + " --check --stats 2>&1");
     EXPECT_EQ(r.status, 0) << r.out;
     EXPECT_NE(r.out.find("0 violations, 0 degenerate"), std::string::npos) << r.out;
   }

@@ -19,11 +19,11 @@
 namespace {
 
 using namespace tritri_test::arrangement;
-using tritri_test::Q3;
 using tritri_test::exact;
 using tritri_test::in_closed_triangle;
 using tritri_test::orient3d;
 using tritri_test::projection_axis;
+using tritri_test::Q3;
 
 TEST(Triangulate, GraphPointsAndConstraintsAreInTheOutput) {
   for (const auto& [name, soup] : generated_scenes())

@@ -62,7 +62,8 @@ bool is_simple(const std::vector<P2>& p) {
       const P2& common = j == i + 1 ? p[j] : p[i];
       const P2& far_a = j == i + 1 ? p[i] : p[(i + 1) % n];
       const P2& far_b = j == i + 1 ? p[(j + 1) % n] : p[j];
-      if (CGAL::collinear(far_a, common, far_b) && !CGAL::collinear_are_strictly_ordered_along_line(far_a, common, far_b))
+      if (CGAL::collinear(far_a, common, far_b) &&
+          !CGAL::collinear_are_strictly_ordered_along_line(far_a, common, far_b))
         return false;
     }
   return true;
@@ -177,8 +178,8 @@ TEST(TriangulatePolygon, GeneratedPolygonsInAnyPlaneScaleAndOffsetAreTiledOrFann
               std::vector<Tri> tris;
               const bool certified = triangulate_polygon(poly.V, poly.corners, tris);
               const std::string p = problem(poly, tris);
-              ASSERT_EQ(p, "") << "rep " << rep << " axis " << axis << " tilted " << tilted << " k " << k
-                               << " offset " << offset << " n " << shape.size();
+              ASSERT_EQ(p, "") << "rep " << rep << " axis " << axis << " tilted " << tilted << " k " << k << " offset "
+                               << offset << " n " << shape.size();
               std::vector<P2> q;
               for (int c : poly.corners) q.push_back(project(poly.V[c], axis));
               ASSERT_EQ(certified, shape.size() == 3 || is_simple(q));  // a triangle is always its own

@@ -24,9 +24,9 @@
 namespace {
 
 using namespace tritri_test::arrangement;
-using tritri_test::Q;
-using tritri_test::exact;
 using tritri_test::area2;
+using tritri_test::exact;
+using tritri_test::Q;
 using tritri_test::test_scale;
 namespace fs = std::filesystem;
 
@@ -36,11 +36,15 @@ TEST(Triangulate, OutputTrianglesTileTheirSourcesExactly) {
     for (Classifier c : kClassifiers)
       expect_no_problems(tiling_problems(run_stages(soup, c)), name + " (" + name_of(c) + ")");
   }
-  expect_no_problems(tiling_problems(run_stages(rotated_copies(uv_sphere({0, 0, 0}, 1.0, 5, 6), 3), Classifier::Tritri)),
-                       "rotated spheres");
-  expect_no_problems(tiling_problems(run_stages(rotated_copies(box({0, 0, 0}, {2, 1, 1}), 4), Classifier::Tritri)), "rotated boxes");
-  expect_no_problems(tiling_problems(run_stages(rotated_copies(grid(3, 1.0, 0.0), 3), Classifier::Tritri)), "rotated grids");
-  expect_no_problems(tiling_problems(run_stages(overlapping_triangles(true), Classifier::Native)), "overlapping triangles");
+  expect_no_problems(
+      tiling_problems(run_stages(rotated_copies(uv_sphere({0, 0, 0}, 1.0, 5, 6), 3), Classifier::Tritri)),
+      "rotated spheres");
+  expect_no_problems(tiling_problems(run_stages(rotated_copies(box({0, 0, 0}, {2, 1, 1}), 4), Classifier::Tritri)),
+                     "rotated boxes");
+  expect_no_problems(tiling_problems(run_stages(rotated_copies(grid(3, 1.0, 0.0), 3), Classifier::Tritri)),
+                     "rotated grids");
+  expect_no_problems(tiling_problems(run_stages(overlapping_triangles(true), Classifier::Native)),
+                     "overlapping triangles");
 }
 
 // Coplanar overlaps are emitted once: the total area is the area of the union, by hand.
@@ -51,18 +55,19 @@ TEST(Triangulate, CoplanarOverlapIsEmittedOnce) {
     Q union_area2;  // twice the area of the union in the XY projection
   };
   const std::vector<Case> cases = {
-      {"overlapping squares", overlapping_squares(), Q(2 * 7)},           // 4 + 4 - 1
+      {"overlapping squares", overlapping_squares(), Q(2 * 7)},            // 4 + 4 - 1
       {"overlapping triangles", overlapping_triangles(false), Q(2 * 14)},  // 8 + 8 - 2
-      {"coplanar grids", coplanar_grids(), Q(2 * 36)},                    // the second grid is inside the first
-      {"grids sharing cells", grids_sharing_cells(), Q(2 * 20)},          // [0,5] x [0,4]
-      {"star of David", kIntegerStar.soup(), Q(2 * 96)},                  // 72 + 72 - 48 (hexagon)
+      {"coplanar grids", coplanar_grids(), Q(2 * 36)},                     // the second grid is inside the first
+      {"grids sharing cells", grids_sharing_cells(), Q(2 * 20)},           // [0,5] x [0,4]
+      {"star of David", kIntegerStar.soup(), Q(2 * 96)},                   // 72 + 72 - 48 (hexagon)
   };
   for (const auto& cs : cases)
     for (Classifier c : kClassifiers) {
       const ArrangeResult r = run_arrange(cs.soup, c);
       Q total = 0;
       for (const Tri& t : r.mesh.triangles)
-        total += abs(area2(exact(r.mesh.vertices[t[0]]), exact(r.mesh.vertices[t[1]]), exact(r.mesh.vertices[t[2]]), 2));
+        total +=
+            abs(area2(exact(r.mesh.vertices[t[0]]), exact(r.mesh.vertices[t[1]]), exact(r.mesh.vertices[t[2]]), 2));
       EXPECT_EQ(total, cs.union_area2) << cs.name << " (" << name_of(c) << ")";
     }
 }

@@ -27,7 +27,6 @@
 #include "support/run_program.h"
 #include "support/temp_dir.h"
 
-
 namespace {
 
 namespace fs = std::filesystem;
@@ -65,8 +64,10 @@ std::string raw_value(const std::string& json, const std::string& key) {
     for (j = i; j < json.size(); ++j) {
       const char c = json[j];
       if (in_string) {
-        if (c == '\\') ++j;
-        else if (c == '"') in_string = false;
+        if (c == '\\')
+          ++j;
+        else if (c == '"')
+          in_string = false;
       } else if (c == '"') {
         in_string = true;
       } else if (c == '{' || c == '[') {
@@ -94,9 +95,9 @@ long long integer(const std::string& json, const std::string& key) {
 }
 
 // The top-level keys of the contract, and the keys of each classifier's object.
-const char* kTopKeys[] = {"file",          "in_vertices",    "in_triangles", "intersection_points", "points_equal",
-                          "segments_equal", "counts_equal",  "euler_equal",  "agree",               "differences",
-                          "native",        "tritri"};
+const char* kTopKeys[] = {"file",         "in_vertices",    "in_triangles", "intersection_points",
+                          "points_equal", "segments_equal", "counts_equal", "euler_equal",
+                          "agree",        "differences",    "native",       "tritri"};
 const char* kRunKeys[] = {"t_classify_s", "t_total_s", "out_vertices",   "out_triangles",
                           "euler",        "out_edges", "orient3d_calls", "orient2d_calls"};
 
@@ -206,7 +207,8 @@ TEST_F(TritriCompare, TwoFilesFormOneModel) {
     EXPECT_EQ(integer(one.out, "in_triangles"), 1) << f;
   }
   // Two spheres in two files agree too.
-  expect_agreement({write("s1.off", uv_sphere({0, 0, 0}, 1, 8, 12)), write("s2.off", uv_sphere({0.75, 0, 0}, 1, 8, 12))});
+  expect_agreement(
+      {write("s1.off", uv_sphere({0, 0, 0}, 1, 8, 12)), write("s2.off", uv_sphere({0.75, 0, 0}, 1, 8, 12))});
 }
 
 TEST_F(TritriCompare, InjectedDisagreementIsReported) {
@@ -261,8 +263,8 @@ TEST_F(TritriCompare, BadOptionsExitWithTwo) {
 TEST_F(TritriCompare, HelpExitsWithZeroAndNamesTheContract) {
   const CliRun r = compare("--help");
   EXPECT_EQ(r.status, 0);
-  for (const char* word : {"--json", "--inject-disagreement", "--threads", "intersection_points", "agree",
-                           "exit status"})
+  for (const char* word :
+       {"--json", "--inject-disagreement", "--threads", "intersection_points", "agree", "exit status"})
     EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 
@@ -282,15 +284,32 @@ TEST_F(TritriCompare, EveryHostileOptionValueIsAUsageError) {
   const std::string good = write("good.off", box({0, 0, 0}, {1, 1, 1}));
   // Values no integer option takes: empty, signs, spaces, prefixes, suffixes, fractions,
   // NaN, numbers beyond every range (2^31 - 1, 2^63, 2^64, 10^30), an option.
-  const std::vector<std::string> bad_integers = {
-      "", "-1", "-0", "+5", " 5", "5 ", "5x", "0x10", "1e3", "1.5", "nan", "NaN", "inf", "two",
-      "2147483647", "2147483648", "9223372036854775807", "9223372036854775808", "18446744073709551616",
-      "1000000000000000000000000000000", "--json"};
+  const std::vector<std::string> bad_integers = {"",
+                                                 "-1",
+                                                 "-0",
+                                                 "+5",
+                                                 " 5",
+                                                 "5 ",
+                                                 "5x",
+                                                 "0x10",
+                                                 "1e3",
+                                                 "1.5",
+                                                 "nan",
+                                                 "NaN",
+                                                 "inf",
+                                                 "two",
+                                                 "2147483647",
+                                                 "2147483648",
+                                                 "9223372036854775807",
+                                                 "9223372036854775808",
+                                                 "18446744073709551616",
+                                                 "1000000000000000000000000000000",
+                                                 "--json"};
   std::vector<std::vector<std::string>> cases;
   for (const char* opt : {"--threads", "--repeat", "--max-differences"}) {
     for (const std::string& v : bad_integers) cases.push_back({good, "--json", opt, v});
-    cases.push_back({good, "--json", opt});                    // missing value
-    cases.push_back({good, "--json", opt, "1", opt, "1"});     // given twice
+    cases.push_back({good, "--json", opt});                 // missing value
+    cases.push_back({good, "--json", opt, "1", opt, "1"});  // given twice
   }
   // Beyond each option's range: threads above the shared cap (65536 and more crashed oneTBB),
   // no runs, more differences than listed.
@@ -299,7 +318,8 @@ TEST_F(TritriCompare, EveryHostileOptionValueIsAUsageError) {
   cases.push_back({good, "--json", "--repeat", "0"});
   cases.push_back({good, "--json", "--repeat", "1000001"});
   cases.push_back({good, "--json", "--max-differences", "1000001"});
-  for (const char* opt : {"--bogus", "-x", "--threads=2", "--", "---", "--JSON"}) cases.push_back({good, "--json", opt});
+  for (const char* opt : {"--bogus", "-x", "--threads=2", "--", "---", "--JSON"})
+    cases.push_back({good, "--json", opt});
   cases.push_back({good, "--json", ""});  // an empty input file name
   cases.push_back({"", "--json"});
   cases.push_back({});

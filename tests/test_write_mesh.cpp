@@ -87,11 +87,9 @@ std::vector<ImplicitPoint> sample_points() {
       ImplicitPoint::lpi(o, P{1, 2, 3}, ex, ey, ez),
       // x + y + z = 1, x = y, z = 3x meet at (1/5, 1/5, 3/5).
       ImplicitPoint::tpi(ex, ey, ez, o, P{1, 1, 0}, ez, o, ey, P{1, 0, 3}),
-      ImplicitPoint::lpi(P{0.1, 0.2, 0.3}, P{1.7, -2.3, 0.9}, P{0.3, 0.1, -0.5}, P{-1.1, 0.4, 0.2},
-                         P{0.6, -0.8, 1.3}),
-      ImplicitPoint::tpi(P{0.1, 0.7, 0.3}, P{1.3, -0.2, 0.9}, P{-0.4, 0.5, 1.1}, P{0.2, 0.2, -0.7},
-                         P{1.9, 0.3, 0.1}, P{-0.6, 1.4, 0.8}, P{0.9, -1.2, 0.3}, P{0.5, 0.5, 2.1},
-                         P{-1.3, 0.7, -0.2}),
+      ImplicitPoint::lpi(P{0.1, 0.2, 0.3}, P{1.7, -2.3, 0.9}, P{0.3, 0.1, -0.5}, P{-1.1, 0.4, 0.2}, P{0.6, -0.8, 1.3}),
+      ImplicitPoint::tpi(P{0.1, 0.7, 0.3}, P{1.3, -0.2, 0.9}, P{-0.4, 0.5, 1.1}, P{0.2, 0.2, -0.7}, P{1.9, 0.3, 0.1},
+                         P{-0.6, 1.4, 0.8}, P{0.9, -1.2, 0.3}, P{0.5, 0.5, 2.1}, P{-1.3, 0.7, -0.2}),
   };
 }
 
@@ -232,8 +230,7 @@ TEST(WriteMesh, ObjAndOffProvenanceSideFileListsSourceAndLabels) {
   const auto lines = file_lines(dir.path("m.obj.provenance.csv"));
   EXPECT_EQ(lines[2], "1,3,0 1 7");
   EXPECT_EQ(lines[3], "2,2,");  // the empty label set
-  EXPECT_EQ(dir.entries(),
-            (std::set<std::string>{"m.obj", "m.obj.provenance.csv", "m.off", "m.off.provenance.csv"}));
+  EXPECT_EQ(dir.entries(), (std::set<std::string>{"m.obj", "m.obj.provenance.csv", "m.off", "m.off.provenance.csv"}));
 }
 
 // Reads the body of a PLY file as write_mesh.h describes it.
@@ -279,7 +276,8 @@ PlyContents read_ply(const std::string& path, bool int_source) {
     c.vertices.push_back({take<double>(bytes, pos), take<double>(bytes, pos), take<double>(bytes, pos)});
   for (std::size_t f = 0; f < nf; ++f) {
     EXPECT_EQ(take<std::uint8_t>(bytes, pos), 3);
-    c.triangles.push_back({take<std::int32_t>(bytes, pos), take<std::int32_t>(bytes, pos), take<std::int32_t>(bytes, pos)});
+    c.triangles.push_back(
+        {take<std::int32_t>(bytes, pos), take<std::int32_t>(bytes, pos), take<std::int32_t>(bytes, pos)});
     ProvenanceRow row{};
     row.source = int_source ? take<std::int32_t>(bytes, pos) : static_cast<std::int64_t>(take<double>(bytes, pos));
     const std::uint32_t n = take<std::uint32_t>(bytes, pos);
@@ -388,8 +386,8 @@ TEST(WriteMesh, UnwritablePathThrowsRuntimeErrorAndLeavesNoFile) {
   fs::create_directory(dir.path("folder.obj"));
   fs::create_directory(dir.path("m.off.provenance.csv"));
   const std::set<std::string> before = dir.entries();
-  for (const std::string& path : {dir.path("missing_folder/m.obj"), dir.path("plain_file/m.ply"),
-                                  dir.path("folder.obj"), dir.path("m.off")}) {
+  for (const std::string& path :
+       {dir.path("missing_folder/m.obj"), dir.path("plain_file/m.ply"), dir.path("folder.obj"), dir.path("m.off")}) {
     SCOPED_TRACE(path);
     try {
       write_mesh(path, sample_mesh());
@@ -454,14 +452,14 @@ TEST(WriteMesh, CoordinateBeyondTheDoubleRangeNeedsExactOutput) {
 
 TEST(ReadExactMesh, ReadsDecimalsAsTheirExactValue) {
   TempDir dir;
-  const ExactMesh obj = read_exact_mesh(
-      dir.write("d.obj",
-                "# comment\nv 0.1 -2.5e-3 7\r\nv +1/3 -4/6 .5\nvn 0 0 1\nv 1E2 0.0e+0 -0\n"
-                "g group\nv 00012.50 3e-0 -0.000\nf 1/1/1 2//1 -2 4 # quad\n"));
-  EXPECT_EQ(obj.vertices, (std::vector<std::array<Gmpq, 3>>{{q(1, 10), q(-1, 400), q(7)},
-                                                            {q(1, 3), q(-2, 3), q(1, 2)},
-                                                            {q(100), q(0), q(0)},
-                                                            {q(25, 2), q(3), q(0)}}));
+  const ExactMesh obj =
+      read_exact_mesh(dir.write("d.obj",
+                                "# comment\nv 0.1 -2.5e-3 7\r\nv +1/3 -4/6 .5\nvn 0 0 1\nv 1E2 0.0e+0 -0\n"
+                                "g group\nv 00012.50 3e-0 -0.000\nf 1/1/1 2//1 -2 4 # quad\n"));
+  EXPECT_EQ(
+      obj.vertices,
+      (std::vector<std::array<Gmpq, 3>>{
+          {q(1, 10), q(-1, 400), q(7)}, {q(1, 3), q(-2, 3), q(1, 2)}, {q(100), q(0), q(0)}, {q(25, 2), q(3), q(0)}}));
   EXPECT_EQ(obj.triangles, (std::vector<Tri>{{0, 1, 2}, {0, 2, 3}}));  // the fan of the quad
   const ExactMesh off =
       read_exact_mesh(dir.write("d.off", "OFF 4 1 0\n# c\n0.1 0 0\n0 1/7 0\n\n0 0 1e-3\n1 1 1\n4 0 1 2 3\n"));
@@ -554,9 +552,15 @@ TEST(ReadExactMesh, CorruptedExactFilesReadOrThrowInputErrorOnly) {
       for (int e = 0; e < edits; ++e) {
         const std::size_t at = rng() % bytes.size();
         switch (rng() % 3) {
-          case 0: bytes[at] = alphabet[rng() % alphabet.size()]; break;
-          case 1: bytes.erase(at, 1 + rng() % 8); break;
-          case 2: bytes.resize(at); break;
+          case 0:
+            bytes[at] = alphabet[rng() % alphabet.size()];
+            break;
+          case 1:
+            bytes.erase(at, 1 + rng() % 8);
+            break;
+          case 2:
+            bytes.resize(at);
+            break;
         }
         if (bytes.empty()) bytes = "v";
       }

@@ -114,7 +114,6 @@ void validate_soup(const TriangleSoup& in) {
   }
 }
 
-
 ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) {
   validate_soup(input);
   return run_pipeline(input, options, nullptr);

@@ -33,7 +33,8 @@ std::string describe(const OutputMesh& m, int i, int j, const std::string& what)
 std::string points_of(const tritri::Result& r) {
   std::string s = r.coplanar ? " [coplanar]" : "";
   for (const auto& p : r.points)
-    s += " " + std::to_string(static_cast<int>(p.type)) + "(" + std::to_string(p.id0) + "," + std::to_string(p.id1) + ")";
+    s += " " + std::to_string(static_cast<int>(p.type)) + "(" + std::to_string(p.id0) + "," + std::to_string(p.id1) +
+         ")";
   return s;
 }
 
@@ -66,7 +67,9 @@ ArrangementCheck check_arrangement(const OutputMesh& mesh, std::size_t max_repor
   std::vector<std::pair<int, int>> pairs;
   CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
       boxes.begin(), boxes.end(),
-      [&](const Box& a, const Box& b) { pairs.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info())); },
+      [&](const Box& a, const Box& b) {
+        pairs.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info()));
+      },
       CGAL::Box_intersection_d::Box_traits_d<Box>(), 10, CGAL::Box_intersection_d::CLOSED);
   std::sort(pairs.begin(), pairs.end());
   out.pairs_checked = pairs.size();

@@ -132,8 +132,8 @@ int main(int argc, char** argv) {
     using arrangements::detail::kWriteFormats;
     const auto format = arrangements::detail::format_of(*output, kWriteFormats);
     if (!format)
-      usage_error("unknown output format '" + *output + "' (known: " +
-                  arrangements::detail::extension_list(kWriteFormats) + ")");
+      usage_error("unknown output format '" + *output +
+                  "' (known: " + arrangements::detail::extension_list(kWriteFormats) + ")");
     if (exact && *format == arrangements::detail::MeshFormat::ply) usage_error("--exact needs an .obj or .off output");
   }
   const int workers = threads > 0 ? threads : tbb::info::default_concurrency();

@@ -57,7 +57,8 @@ int main(int argc, char** argv) {
         usage_error("--rotated-copies needs a value, got the option '" + std::string(argv[i + 1]) + "'");
       const std::string v = argv[++i];
       const auto k = parse_count(v, 1, kMaxCopies);
-      if (!k) usage_error("--rotated-copies needs an integer from 1 to " + std::to_string(kMaxCopies) + ", got '" + v + "'");
+      if (!k)
+        usage_error("--rotated-copies needs an integer from 1 to " + std::to_string(kMaxCopies) + ", got '" + v + "'");
       copies = static_cast<int>(*k);
     } else if (a.size() > 1 && a[0] == '-') {
       usage_error("unknown option '" + a + "'");

@@ -121,8 +121,9 @@ int main(int argc, char** argv) {
         usage_error(name + " needs a value, got the option '" + argv[i + 1] + "'");
       const std::string v = argv[++i];
       const auto n = parse_count(v, lo, hi);
-      if (!n) usage_error(name + " needs an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                          ", got '" + v + "'");
+      if (!n)
+        usage_error(name + " needs an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got '" +
+                    v + "'");
       return *n;
     };
     if (a == "--help" || a == "-h") {
@@ -203,7 +204,8 @@ int main(int argc, char** argv) {
     auto differ = [&](std::string what) {
       if (differences.size() < max_differences) differences.push_back(std::move(what));
     };
-    if (native_internals.soup.vertices != tritri_internals.soup.vertices || native_internals.soup.triangles != tritri_internals.soup.triangles)
+    if (native_internals.soup.vertices != tritri_internals.soup.vertices ||
+        native_internals.soup.triangles != tritri_internals.soup.triangles)
       throw std::logic_error("the two runs preprocessed the input differently");
 
     // Points, as exact sets.
@@ -280,10 +282,11 @@ int main(int argc, char** argv) {
       std::printf("%s: %s\n", file.c_str(), agree ? "native and tritri agree" : "native and tritri DISAGREE");
       std::printf("  intersection points %zu, output V %zu E %zu F %zu, Euler %lld\n", st.intersection_points,
                   st.out_vertices, st.out_edges, st.out_triangles, st.euler);
-      std::printf("  classification: native %.4f s (%zu orient3d, %zu orient2d), tritri %.4f s (%zu orient3d, %zu "
-                  "orient2d), ratio %.3f\n",
-                  sn.t_classify_s, sn.orient3d_calls, sn.orient2d_calls, st.t_classify_s, st.orient3d_calls,
-                  st.orient2d_calls, ratio(st.t_classify_s, sn.t_classify_s));
+      std::printf(
+          "  classification: native %.4f s (%zu orient3d, %zu orient2d), tritri %.4f s (%zu orient3d, %zu "
+          "orient2d), ratio %.3f\n",
+          sn.t_classify_s, sn.orient3d_calls, sn.orient2d_calls, st.t_classify_s, st.orient3d_calls, st.orient2d_calls,
+          ratio(st.t_classify_s, sn.t_classify_s));
       std::printf("  total: native %.4f s, tritri %.4f s\n", sn.t_total_s, st.t_total_s);
       for (const auto& d : differences) std::printf("  difference: %s\n", d.c_str());
     }

@@ -14,8 +14,7 @@ int main() {
   const auto r = tritri::classify<tritri::DoubleKernel>(a0, a1, a2, b0, b1, b2);
 
   for (const auto& p : r.points)
-    std::printf("point type=%d id0=%d id1=%d\n", static_cast<int>(p.type), int(p.id0),
-                int(p.id1));
+    std::printf("point type=%d id0=%d id1=%d\n", static_cast<int>(p.type), int(p.id0), int(p.id1));
   for (const auto& s : r.segments) std::printf("segment %d-%d\n", int(s.p0), int(s.p1));
   std::printf("coplanar=%d intersects=%d\n", int(r.coplanar), int(r.intersects()));
 

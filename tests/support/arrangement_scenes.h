@@ -54,8 +54,8 @@ inline TriangleSoup scaled_pow2(TriangleSoup s, int k) {
 // A in z = 0; B in the plane y = 1 crosses A along (1,1,0)-(2,1,0): each end is a crossing
 // of an edge of B with the interior of A.
 inline TriangleSoup two_triangles_crossing() {
-  return hand_soup({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, -1}, {3, 1, -1}, {1, 1, 1}}, {{0, 1, 2}, {3, 4, 5}},
-                   {0, 1}, {{0}, {1}});
+  return hand_soup({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, -1}, {3, 1, -1}, {1, 1, 1}}, {{0, 1, 2}, {3, 4, 5}}, {0, 1},
+                   {{0}, {1}});
 }
 
 // B pierces A: the intersection runs from p = (1,1,0) (B's edge (1,1,-1)-(1,1,1) through
@@ -72,9 +72,15 @@ inline TriangleSoup triangle_pierced() {
 //   z: B covers [-1, 2], C [-2, 1]: B n C = [-1, 1], -1 on B's edge, 1 on C's.
 // In each triangle the two segments cross at O: one TPI.
 inline TriangleSoup three_triangles_triple_point() {
-  return hand_soup({{-1, -1, 0}, {4, -1, 0}, {-1, 4, 0},    // A: x >= -1, y >= -1, x + y <= 3
-                    {-2, 0, -1}, {3, 0, -1}, {-2, 0, 4},    // B: x >= -2, z >= -1, x + z <= 2
-                    {0, -2, -2}, {0, 3, -2}, {0, -2, 3}},  // C: y >= -2, z >= -2, y + z <= 1
+  return hand_soup({{-1, -1, 0},
+                    {4, -1, 0},
+                    {-1, 4, 0},  // A: x >= -1, y >= -1, x + y <= 3
+                    {-2, 0, -1},
+                    {3, 0, -1},
+                    {-2, 0, 4},  // B: x >= -2, z >= -1, x + z <= 2
+                    {0, -2, -2},
+                    {0, 3, -2},
+                    {0, -2, 3}},  // C: y >= -2, z >= -2, y + z <= 1
                    {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}}, {0, 1, 2}, {{0}, {1}, {2}});
 }
 
@@ -82,15 +88,17 @@ inline TriangleSoup three_triangles_triple_point() {
 // cross in one closed curve, and all three meet in two triple points (near
 // (0.5, 0.29, +-0.82)).
 inline TriangleSoup three_spheres(int rings = 10) {
-  return concatenate(concatenate(uv_sphere({0, 0, 0}, 1.0, rings, rings + 4),
-                                 uv_sphere({1, 0.05, 0.02}, 0.95, rings - 1, rings + 3)),
-                     uv_sphere({0.45, 0.85, -0.03}, 1.05, rings + 1, rings + 2));
+  return concatenate(
+      concatenate(uv_sphere({0, 0, 0}, 1.0, rings, rings + 4), uv_sphere({1, 0.05, 0.02}, 0.95, rings - 1, rings + 3)),
+      uv_sphere({0.45, 0.85, -0.03}, 1.05, rings + 1, rings + 2));
 }
 
 inline TriangleSoup two_spheres() {
   return concatenate(uv_sphere({0, 0, 0}, 1.0, 10, 16), uv_sphere({0.7, 0.3, 0.2}, 0.8, 9, 14));
 }
-inline TriangleSoup cube_through_cube() { return concatenate(box({0, 0, 0}, {2, 2, 2}), box({1, -1, 0.5}, {3, 3, 1.5})); }
+inline TriangleSoup cube_through_cube() {
+  return concatenate(box({0, 0, 0}, {2, 2, 2}), box({1, -1, 0.5}, {3, 3, 1.5}));
+}
 inline TriangleSoup coplanar_grids() { return concatenate(grid(6, 1.0, 0.0), grid(5, 1.0, 0.0, 0.5, 0.25)); }
 inline TriangleSoup grids_sharing_cells() { return concatenate(grid(4, 1.0, 0.0), grid(4, 1.0, 0.0, 1.0, 0.0)); }
 inline TriangleSoup grid_through_sphere() {
@@ -143,8 +151,8 @@ inline std::vector<std::pair<std::string, TriangleSoup>> generated_scenes() {
       {"overlapping squares", overlapping_squares()},
       {"star of David", kIntegerStar.soup()},
       {"rational star", kRationalStar.soup()},
-      {"rotated spheres", full ? rotated_copies(uv_sphere({0, 0, 0}, 1.0, 6, 10), 4)
-                                : rotated_copies(uv_sphere({0, 0, 0}, 1.0, 4, 6), 3)},
+      {"rotated spheres",
+       full ? rotated_copies(uv_sphere({0, 0, 0}, 1.0, 6, 10), 4) : rotated_copies(uv_sphere({0, 0, 0}, 1.0, 4, 6), 3)},
       {"three triangles, triple point", three_triangles_triple_point()},
       {"three spheres", three_spheres(full ? 10 : 6)},
       {"rotated boxes", rotated_copies(box({0, 0, 0}, {2, 1, 1}), 4)},

@@ -55,9 +55,7 @@ inline ITriangle to_input(const Triangle& t) { return {to_input(t[0]), to_input(
 
 inline bool is_degenerate(const ITriangle& t) { return CGAL::collinear(t[0], t[1], t[2]); }
 
-inline CGAL::Orientation side(const ITriangle& t, const IPoint& x) {
-  return CGAL::orientation(t[0], t[1], t[2], x);
-}
+inline CGAL::Orientation side(const ITriangle& t, const IPoint& x) { return CGAL::orientation(t[0], t[1], t[2], x); }
 
 // All three vertices of t strictly on one side of the plane of the non-degenerate `other`.
 inline bool strictly_one_side(const ITriangle& t, const ITriangle& other) {
@@ -96,23 +94,34 @@ struct Claim {
 inline Claim claim_of(const tritri::IntersectionPoint& p) {
   using tritri::Type;
   switch (p.type) {
-    case Type::VA_ON_VB: return {Simplex::Vertex, p.id0, Simplex::Vertex, p.id1};
-    case Type::VA_ON_EB: return {Simplex::Vertex, p.id0, Simplex::Edge, p.id1};
-    case Type::VB_ON_EA: return {Simplex::Edge, p.id1, Simplex::Vertex, p.id0};
-    case Type::VA_ON_TB: return {Simplex::Vertex, p.id0, Simplex::Face, -1};
-    case Type::VB_ON_TA: return {Simplex::Face, -1, Simplex::Vertex, p.id0};
-    case Type::EA_CROSS_EB: return {Simplex::Edge, p.id0, Simplex::Edge, p.id1};
-    case Type::EA_CROSS_TB: return {Simplex::Edge, p.id0, Simplex::Face, -1};
-    default: return {Simplex::Face, -1, Simplex::Edge, p.id0};  // EB_CROSS_TA
+    case Type::VA_ON_VB:
+      return {Simplex::Vertex, p.id0, Simplex::Vertex, p.id1};
+    case Type::VA_ON_EB:
+      return {Simplex::Vertex, p.id0, Simplex::Edge, p.id1};
+    case Type::VB_ON_EA:
+      return {Simplex::Edge, p.id1, Simplex::Vertex, p.id0};
+    case Type::VA_ON_TB:
+      return {Simplex::Vertex, p.id0, Simplex::Face, -1};
+    case Type::VB_ON_TA:
+      return {Simplex::Face, -1, Simplex::Vertex, p.id0};
+    case Type::EA_CROSS_EB:
+      return {Simplex::Edge, p.id0, Simplex::Edge, p.id1};
+    case Type::EA_CROSS_TB:
+      return {Simplex::Edge, p.id0, Simplex::Face, -1};
+    default:
+      return {Simplex::Face, -1, Simplex::Edge, p.id0};  // EB_CROSS_TA
   }
 }
 
 // Vertex v of one triangle lies in simplex (s, id) of the other triangle t.
 inline bool vertex_in_open_simplex(const IPoint& v, const ITriangle& t, Simplex s, int id) {
   switch (s) {
-    case Simplex::Vertex: return v == t[id];
-    case Simplex::Edge: return in_open_segment(v, t[id], t[(id + 1) % 3]);
-    default: return in_open_face(v, t);
+    case Simplex::Vertex:
+      return v == t[id];
+    case Simplex::Edge:
+      return in_open_segment(v, t[id], t[(id + 1) % 3]);
+    default:
+      return in_open_face(v, t);
   }
 }
 
@@ -157,9 +166,11 @@ inline OPoint locate(const tritri::IntersectionPoint& p, const OTriangle& a, con
   switch (p.type) {
     case Type::VA_ON_VB:
     case Type::VA_ON_EB:
-    case Type::VA_ON_TB: return a[p.id0];
+    case Type::VA_ON_TB:
+      return a[p.id0];
     case Type::VB_ON_EA:
-    case Type::VB_ON_TA: return b[p.id0];
+    case Type::VB_ON_TA:
+      return b[p.id0];
     case Type::EA_CROSS_EB: {
       const auto x = CGAL::intersection(line(a, p.id0), line(b, p.id1));
       return *boost::get<OPoint>(&*x);
@@ -291,8 +302,8 @@ inline std::string check_classification(const Pair& pair, const tritri::Result& 
   if (deg_a || deg_b) {
     if (!r.points.empty() || !r.segments.empty()) return "degenerate input but points reported";
     if (r.coplanar) return "degenerate input but coplanar set";
-    const bool must_flag = (deg_a && (deg_b || !strictly_one_side(a, b))) ||
-                           (deg_b && (deg_a || !strictly_one_side(b, a)));
+    const bool must_flag =
+        (deg_a && (deg_b || !strictly_one_side(a, b))) || (deg_b && (deg_a || !strictly_one_side(b, a)));
     if (must_flag && !r.degenerate)
       return "degenerate triangle not strictly on one side of the other's plane, but degenerate == false";
     return "";

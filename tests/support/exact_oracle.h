@@ -123,9 +123,12 @@ inline constexpr tritri::Plane kPlanes[3] = {tritri::Plane::XY, tritri::Plane::Y
 // The projected coordinates of a plane: XY -> (x, y), YZ -> (y, z), ZX -> (z, x).
 inline std::array<int, 2> projected_axes(tritri::Plane plane) {
   switch (plane) {
-    case tritri::Plane::XY: return {0, 1};
-    case tritri::Plane::YZ: return {1, 2};
-    default: return {2, 0};
+    case tritri::Plane::XY:
+      return {0, 1};
+    case tritri::Plane::YZ:
+      return {1, 2};
+    default:
+      return {2, 0};
   }
 }
 
@@ -185,8 +188,7 @@ int projection_axis(const P& a, const P& b, const P& c) {
 // p in the closed triangle (a, b, c), all four coplanar, in the projection along `axis`.
 inline bool in_closed_triangle(const Q3& a, const Q3& b, const Q3& c, const Q3& p, int axis) {
   const int s = sgn(area2(a, b, c, axis));
-  return sgn(area2(a, b, p, axis)) * s >= 0 && sgn(area2(b, c, p, axis)) * s >= 0 &&
-         sgn(area2(c, a, p, axis)) * s >= 0;
+  return sgn(area2(a, b, p, axis)) * s >= 0 && sgn(area2(b, c, p, axis)) * s >= 0 && sgn(area2(c, a, p, axis)) * s >= 0;
 }
 
 // x strictly inside the open segment (p, q), p != q.

@@ -105,7 +105,9 @@ inline std::optional<Q3> exact_point(const Recipe& r) {
 // Double points and triples.
 
 // p + s d
-inline Point moved(const Point& p, const Point& d, double s) { return {p[0] + s * d[0], p[1] + s * d[1], p[2] + s * d[2]}; }
+inline Point moved(const Point& p, const Point& d, double s) {
+  return {p[0] + s * d[0], p[1] + s * d[1], p[2] + s * d[2]};
+}
 inline Point unit(int k) {
   Point e{0, 0, 0};
   e[k] = 1;
@@ -157,14 +159,19 @@ inline Transform random_transform(Rng& rng, bool shift) {
   switch (rng.uniform(0, 9)) {
     case 0:
     case 1:
-    case 2: break;
+    case 2:
+      break;
     case 3:
-    case 4: t.exponent.fill(rng.uniform(-60, 60)); break;
+    case 4:
+      t.exponent.fill(rng.uniform(-60, 60));
+      break;
     case 5:
     case 6:
       for (int& e : t.exponent) e = rng.uniform(-60, 60);
       break;
-    case 7: t.exponent.fill(rng.percent(50) ? 300 : -300); break;
+    case 7:
+      t.exponent.fill(rng.percent(50) ? 300 : -300);
+      break;
     case 8: {
       static constexpr int kMixed[] = {-300, -60, 0, 60, 300};
       for (int& e : t.exponent) e = kMixed[rng.uniform(0, 4)];

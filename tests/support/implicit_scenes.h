@@ -143,7 +143,9 @@ class SceneBuilder {
       P.o = any_point();
       for (;;) {
         const int k = rng_.uniform(0, 2);
-        auto small = [&] { return Point{double(rng_.uniform(-2, 2)), double(rng_.uniform(-2, 2)), double(rng_.uniform(-2, 2))}; };
+        auto small = [&] {
+          return Point{double(rng_.uniform(-2, 2)), double(rng_.uniform(-2, 2)), double(rng_.uniform(-2, 2))};
+        };
         P.u = mode < 5 ? unit(k) : small();
         P.v = mode < 2 ? unit((k + 1) % 3) : small();
         if (!is_zero(cross_d(P.u, P.v))) break;
@@ -220,12 +222,14 @@ class SceneBuilder {
     const LineSpec L = line(in_plane ? &P : nullptr);
     Group g{GroupKind::Collinear, {}, 0};
     const int n_explicit = grid_ ? rng_.uniform(2, 3) : 2;
-    for (int i = 0; i < n_explicit; ++i) g.members.push_back(add(explicit_recipe(grid_ ? L.point(rng_) : (i ? L.p1 : L.p0))));
+    for (int i = 0; i < n_explicit; ++i)
+      g.members.push_back(add(explicit_recipe(grid_ ? L.point(rng_) : (i ? L.p1 : L.p0))));
     for (int i = rng_.uniform(3, 5); i > 0; --i) {
       const auto [a, b] = L.pair(rng_);
       g.members.push_back(add(lpi_recipe(a, b, !in_plane && rng_.percent(20) ? P.triple(rng_) : any_triple())));
     }
-    for (int i = rng_.uniform(2, 3); i > 0; --i) g.members.push_back(tpi({plane_through(L), plane_through(L), any_triple()}));
+    for (int i = rng_.uniform(2, 3); i > 0; --i)
+      g.members.push_back(tpi({plane_through(L), plane_through(L), any_triple()}));
     if (in_plane)
       for (int m : g.members) groups_[plane_group].members.push_back(m);
     groups_.push_back(g);
@@ -271,7 +275,8 @@ class SceneBuilder {
       const auto [p, q] = L.pair(rng_);
       g.members.push_back(add(lpi_recipe(p, q, T.triple(rng_))));
     }
-    for (int i = rng_.uniform(2, 3); i > 0; --i) g.members.push_back(tpi({T.triple(rng_), plane_through(L), plane_through(L)}));
+    for (int i = rng_.uniform(2, 3); i > 0; --i)
+      g.members.push_back(tpi({T.triple(rng_), plane_through(L), plane_through(L)}));
     groups_.push_back(g);
   }
 
@@ -281,7 +286,8 @@ class SceneBuilder {
   void crossing_structure() {
     const PlaneSpec Q = [&] {
       PlaneSpec q;
-      do q = plane(); while (!q.lattice);
+      do q = plane();
+      while (!q.lattice);
       return q;
     }();
     LineSpec L1, L2;
@@ -326,9 +332,15 @@ class SceneBuilder {
   void random_points(int n) {
     for (int i = 0; i < n; ++i) {
       switch (rng_.uniform(0, 2)) {
-        case 0: add(explicit_recipe(any_point())); break;
-        case 1: add(lpi_recipe(any_point(), any_point(), any_triple())); break;
-        default: add(tpi_recipe({any_triple(), any_triple(), any_triple()})); break;
+        case 0:
+          add(explicit_recipe(any_point()));
+          break;
+        case 1:
+          add(lpi_recipe(any_point(), any_point(), any_triple()));
+          break;
+        default:
+          add(tpi_recipe({any_triple(), any_triple(), any_triple()}));
+          break;
       }
     }
   }
@@ -459,7 +471,8 @@ inline std::string operands(const Scene& s, const int* idx, int n) {
   std::string out;
   for (int i = 0; i < n; ++i) {
     const auto& p = s.points[idx[i]];
-    out += std::string("  ") + char('a' + i) + " = " + describe(p.recipe) + "\n      exact " + to_string(p.exact) + "\n";
+    out +=
+        std::string("  ") + char('a' + i) + " = " + describe(p.recipe) + "\n      exact " + to_string(p.exact) + "\n";
   }
   return out + "  " + transform_string(s.transform);
 }

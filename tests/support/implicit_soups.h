@@ -51,7 +51,8 @@ class SoupBuilder {
         soup_.on[i].push_back(id);
         // The line from v to a point off the plane meets the plane at v.
         const Point m = any_point();
-        if (sign_against(soup_.triangles[i], m) != 0) add_rep(id, lpi_recipe(v, m, reordered(soup_.triangles[i], rng_)));
+        if (sign_against(soup_.triangles[i], m) != 0)
+          add_rep(id, lpi_recipe(v, m, reordered(soup_.triangles[i], rng_)));
       }
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j)

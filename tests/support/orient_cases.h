@@ -124,7 +124,9 @@ class Rng {
     }
   }
   template <class C>
-  void shuffle(C& c) { std::shuffle(c.begin(), c.end(), g_); }
+  void shuffle(C& c) {
+    std::shuffle(c.begin(), c.end(), g_);
+  }
 
  private:
   std::mt19937_64 g_;
@@ -152,10 +154,11 @@ Case<N> grid_degenerate(Rng& r) {
   const double range = std::ldexp(1.0, kBits[r.integer(0, 6)]);
   Case<N> p{};
   for (std::size_t i = 0; i < N; ++i)
-    for (std::size_t k = 0; k < N; ++k) p[i][k] = static_cast<double>(r.integer(static_cast<std::int64_t>(-range), static_cast<std::int64_t>(range)));
+    for (std::size_t k = 0; k < N; ++k)
+      p[i][k] = static_cast<double>(r.integer(static_cast<std::int64_t>(-range), static_cast<std::int64_t>(range)));
   const int variant = static_cast<int>(r.integer(0, 19));
-  if (variant == 0) p[1] = p[0];                       // a repeated point
-  if (variant == 1 && N == 3)                          // first three collinear
+  if (variant == 0) p[1] = p[0];  // a repeated point
+  if (variant == 1 && N == 3)     // first three collinear
     for (std::size_t k = 0; k < N; ++k) p[2][k] = p[0][k] + r.small_dyadic() * (p[1][k] - p[0][k]);
   double coef[N];
   for (std::size_t i = 1; i < N; ++i) coef[i] = r.small_dyadic();
@@ -210,24 +213,31 @@ void translate(Case<N>& p, Rng& r, int min_shift, int max_shift) {
 
 // Exponent ranges for per-axis scaling.
 enum class Scales {
-  Near1,         // [-8, 8]
-  FilterEdge,    // around 2^-250 and 2^250 (the filter's range for differences)
-  ExpansionEdge, // around 2^-280 and 2^280 (the expansion stage's range for coordinates)
-  Overflowing,   // products of differences overflow or underflow double
-  Subnormal,     // into the subnormal range
-  Huge,          // near DBL_MAX
-  Anywhere,      // uniform over all exponents
+  Near1,          // [-8, 8]
+  FilterEdge,     // around 2^-250 and 2^250 (the filter's range for differences)
+  ExpansionEdge,  // around 2^-280 and 2^280 (the expansion stage's range for coordinates)
+  Overflowing,    // products of differences overflow or underflow double
+  Subnormal,      // into the subnormal range
+  Huge,           // near DBL_MAX
+  Anywhere,       // uniform over all exponents
 };
 
 inline int pick_exponent(Rng& r, Scales s) {
   switch (s) {
-    case Scales::Near1: return static_cast<int>(r.integer(-8, 8));
-    case Scales::FilterEdge: return static_cast<int>(r.sign() * r.integer(236, 264));
-    case Scales::ExpansionEdge: return static_cast<int>(r.sign() * r.integer(266, 294));
-    case Scales::Overflowing: return static_cast<int>(r.sign() * r.integer(330, 560));
-    case Scales::Subnormal: return static_cast<int>(r.integer(-1100, -1000));
-    case Scales::Huge: return static_cast<int>(r.integer(900, 1100));
-    case Scales::Anywhere: return static_cast<int>(r.integer(-1100, 1100));
+    case Scales::Near1:
+      return static_cast<int>(r.integer(-8, 8));
+    case Scales::FilterEdge:
+      return static_cast<int>(r.sign() * r.integer(236, 264));
+    case Scales::ExpansionEdge:
+      return static_cast<int>(r.sign() * r.integer(266, 294));
+    case Scales::Overflowing:
+      return static_cast<int>(r.sign() * r.integer(330, 560));
+    case Scales::Subnormal:
+      return static_cast<int>(r.integer(-1100, -1000));
+    case Scales::Huge:
+      return static_cast<int>(r.integer(900, 1100));
+    case Scales::Anywhere:
+      return static_cast<int>(r.integer(-1100, 1100));
   }
   return 0;
 }
@@ -268,9 +278,8 @@ void perturb(Case<N>& p, Rng& r) {
 // overflow, subnormal grids.
 
 inline double special_value(Rng& r) {
-  static const double kSpecial[] = {0.0,          1.0,        DBL_MIN,    DBL_TRUE_MIN, DBL_MAX,
-                                    0x1p-250,     0x1p250,    0x1p-280,   0x1p280,      0x1p-511,
-                                    0x1p511,      0x1p-1022,  0x1p1023,   3.0,          0.5};
+  static const double kSpecial[] = {0.0,     1.0,      DBL_MIN, DBL_TRUE_MIN, DBL_MAX,  0x1p-250, 0x1p250, 0x1p-280,
+                                    0x1p280, 0x1p-511, 0x1p511, 0x1p-1022,    0x1p1023, 3.0,      0.5};
   double x = kSpecial[r.integer(0, std::size(kSpecial) - 1)];
   if (r.chance(0.3)) x = std::nextafter(x, r.chance(0.5) ? 0.0 : HUGE_VAL);
   return r.sign() * x;
@@ -336,9 +345,12 @@ Case<N> random_case(Rng& r) {
   const int kind = static_cast<int>(r.integer(0, 3));
   for (auto& q : p)
     for (double& x : q) {
-      if (kind <= 1) x = r.real(-1, 1);
-      else if (kind == 2) x = static_cast<double>(r.integer(-3, 3));  // small integers: often degenerate
-      else x = r.sign() * std::ldexp(r.mantissa(), static_cast<int>(r.integer(-30, 30)));
+      if (kind <= 1)
+        x = r.real(-1, 1);
+      else if (kind == 2)
+        x = static_cast<double>(r.integer(-3, 3));  // small integers: often degenerate
+      else
+        x = r.sign() * std::ldexp(r.mantissa(), static_cast<int>(r.integer(-30, 30)));
     }
   return p;
 }
@@ -350,13 +362,20 @@ enum class Family { Grid, Rounded, Scaled, Thresholds, Translated, Extreme, Rand
 
 inline const char* family_name(Family f) {
   switch (f) {
-    case Family::Grid: return "Grid";
-    case Family::Rounded: return "Rounded";
-    case Family::Scaled: return "Scaled";
-    case Family::Thresholds: return "Thresholds";
-    case Family::Translated: return "Translated";
-    case Family::Extreme: return "Extreme";
-    case Family::Random: return "Random";
+    case Family::Grid:
+      return "Grid";
+    case Family::Rounded:
+      return "Rounded";
+    case Family::Scaled:
+      return "Scaled";
+    case Family::Thresholds:
+      return "Thresholds";
+    case Family::Translated:
+      return "Translated";
+    case Family::Extreme:
+      return "Extreme";
+    case Family::Random:
+      return "Random";
   }
   return "?";
 }
@@ -408,9 +427,8 @@ struct FamilyPlan {
 
 // 1,000,000 cases per predicate at scale 1.0.
 inline constexpr FamilyPlan kPlans[] = {
-    {Family::Grid, 250000},       {Family::Rounded, 150000}, {Family::Scaled, 200000},
-    {Family::Thresholds, 150000}, {Family::Translated, 100000}, {Family::Extreme, 100000},
-    {Family::Random, 50000},
+    {Family::Grid, 250000},       {Family::Rounded, 150000}, {Family::Scaled, 200000}, {Family::Thresholds, 150000},
+    {Family::Translated, 100000}, {Family::Extreme, 100000}, {Family::Random, 50000},
 };
 
 // A mixture of all families, for the property tests.

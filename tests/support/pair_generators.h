@@ -48,8 +48,7 @@ inline std::string to_decimal(const Triangle& t) {
   std::string s = "{";
   for (int i = 0; i < 3; ++i) {
     char buf[100];
-    std::snprintf(buf, sizeof buf, "%s{%.17g, %.17g, %.17g}", i ? ", " : "", t[i][0], t[i][1],
-                  t[i][2]);
+    std::snprintf(buf, sizeof buf, "%s{%.17g, %.17g, %.17g}", i ? ", " : "", t[i][0], t[i][1], t[i][2]);
     s += buf;
   }
   return s + "}";
@@ -74,9 +73,7 @@ class Rng {
     return z ^ (z >> 31);
   }
   // Uniform integer in [lo, hi] (the modulo bias is irrelevant here).
-  int uniform(int lo, int hi) {
-    return lo + static_cast<int>(next() % static_cast<std::uint64_t>(hi - lo + 1));
-  }
+  int uniform(int lo, int hi) { return lo + static_cast<int>(next() % static_cast<std::uint64_t>(hi - lo + 1)); }
   bool percent(int p) { return uniform(0, 99) < p; }
   // Uniform double in [-1, 1) with 53 random bits.
   double symmetric_unit() { return static_cast<double>(next() >> 11) * 0x1p-52 - 1.0; }
@@ -88,8 +85,7 @@ class Rng {
 // ---------------------------------------------------------------------------------------
 // Exact symmetries.
 
-inline constexpr int kAxisPermutations[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
-                                                {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+inline constexpr int kAxisPermutations[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
 
 // New coordinate k is old coordinate perm[k], negated when bit k of `flips` is set.
 inline Point permute_axes(const Point& p, int perm, int flips) {
@@ -182,9 +178,7 @@ struct LatticePlane {
   Point at(double s, double t) const { return add(o, add(mul(s, u), mul(t, v))); }
   // A random point with s, t multiples of 1/2 in [-3, 3].
   Point random_point(Rng& rng) const { return at(rng.uniform(-6, 6) * 0.5, rng.uniform(-6, 6) * 0.5); }
-  Triangle random_triangle(Rng& rng) const {
-    return {random_point(rng), random_point(rng), random_point(rng)};
-  }
+  Triangle random_triangle(Rng& rng) const { return {random_point(rng), random_point(rng), random_point(rng)}; }
 };
 
 inline LatticePlane random_lattice_plane(Rng& rng) {
@@ -345,14 +339,22 @@ inline Pair gen_random_near(Rng& rng) {
 // The structured generators, for composition by the ones below.
 inline Pair gen_structured(Rng& rng) {
   switch (rng.uniform(0, 7)) {
-    case 0: return gen_grid_wide(rng);
-    case 1: return gen_grid_tight(rng);
-    case 2: return gen_coplanar(rng);
-    case 3: return gen_coplanar_overlap(rng);
-    case 4: return gen_shared_vertex(rng);
-    case 5: return gen_shared_edge(rng);
-    case 6: return gen_vertex_on_triangle(rng);
-    default: return gen_edge_through_point(rng);
+    case 0:
+      return gen_grid_wide(rng);
+    case 1:
+      return gen_grid_tight(rng);
+    case 2:
+      return gen_coplanar(rng);
+    case 3:
+      return gen_coplanar_overlap(rng);
+    case 4:
+      return gen_shared_vertex(rng);
+    case 5:
+      return gen_shared_edge(rng);
+    case 6:
+      return gen_vertex_on_triangle(rng);
+    default:
+      return gen_edge_through_point(rng);
   }
 }
 

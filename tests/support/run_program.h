@@ -51,8 +51,7 @@ struct Exit {
 
 // Runs `program` with exactly `args` (no shell), stdout and stderr captured through files in
 // `dir`; a start failure fails the test.
-inline Exit spawn(const std::string& program, const std::vector<std::string>& args,
-                  const std::filesystem::path& dir) {
+inline Exit spawn(const std::string& program, const std::vector<std::string>& args, const std::filesystem::path& dir) {
   std::vector<std::string> all{program};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;

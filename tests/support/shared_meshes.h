@@ -31,14 +31,14 @@ inline bool shared_meshes_required() {
   return (ci && std::string_view(ci) == "true") || (req && std::string_view(req) == "1");
 }
 
-#define TRITRI_REQUIRE_DATA(path)                                                               \
-  do {                                                                                          \
-    if (!std::filesystem::exists(path)) {                                                       \
-      if (tritri_test::shared_meshes_required()) {                                              \
-        FAIL() << "missing test data (required in CI): " << (path);                             \
-      }                                                                                         \
-      GTEST_SKIP() << "no test data at " << (path);                                             \
-    }                                                                                           \
+#define TRITRI_REQUIRE_DATA(path)                                   \
+  do {                                                              \
+    if (!std::filesystem::exists(path)) {                           \
+      if (tritri_test::shared_meshes_required()) {                  \
+        FAIL() << "missing test data (required in CI): " << (path); \
+      }                                                             \
+      GTEST_SKIP() << "no test data at " << (path);                 \
+    }                                                               \
   } while (0)
 
 inline std::filesystem::path bad_input_dir() { return std::filesystem::path(TRITRI_TESTS_DIR) / "bad_input"; }

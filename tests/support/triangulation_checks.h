@@ -70,8 +70,8 @@ struct Triangulated {
   std::vector<LabelSet> label_sets;
 };
 
-inline Triangulated in_graph_numbering(const TriangleSoup& soup, const IntersectionGraph& g,
-                                       const OutputMesh& mesh, const TriangulationInfo& info) {
+inline Triangulated in_graph_numbering(const TriangleSoup& soup, const IntersectionGraph& g, const OutputMesh& mesh,
+                                       const TriangulationInfo& info) {
   Triangulated tr;
   tr.num_tpi = info.new_tpi;
   tr.points = g.points;
@@ -115,7 +115,8 @@ inline Pipeline run_stages(const TriangleSoup& input, Classifier classifier) {
   return p;
 }
 
-inline ArrangeResult run_arrange(const TriangleSoup& input, Classifier classifier, int threads = 0, bool scale = false) {
+inline ArrangeResult run_arrange(const TriangleSoup& input, Classifier classifier, int threads = 0,
+                                 bool scale = false) {
   ArrangeOptions o;
   o.classifier = classifier;
   o.threads = threads;
@@ -229,8 +230,8 @@ inline Problems tiling_problems(const Pipeline& p) {
     // Inside its own source: coplanar (orient3d == 0) and in the closed triangle.
     for (int k = 0; k < 3; ++k) {
       if (orient3d(U[o][0], U[o][1], U[o][2], X[T[k]]) != 0)
-        fail("output triangle " + std::to_string(t) + " vertex " + to_string(X[T[k]]) + " is not in the plane of its owner " +
-             std::to_string(o));
+        fail("output triangle " + std::to_string(t) + " vertex " + to_string(X[T[k]]) +
+             " is not in the plane of its owner " + std::to_string(o));
       else if (!in_closed_triangle(U[o][0], U[o][1], U[o][2], X[T[k]], axis[o]))
         fail("output triangle " + std::to_string(t) + " vertex " + to_string(X[T[k]]) + " is outside its owner " +
              std::to_string(o));

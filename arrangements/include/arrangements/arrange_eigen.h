@@ -93,8 +93,8 @@ TriangleSoup eigen_soup(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<
   soup.triangles = tritri::detail::checked_triangles(F, soup.vertices.size(), where + ": F");
   const std::size_t nf = soup.triangles.size();
   if (labels && static_cast<std::size_t>(labels->size()) != nf)
-    throw std::invalid_argument(where + ": labels must have one entry per row of F (" + std::to_string(nf) +
-                                "), got " + std::to_string(labels->size()));
+    throw std::invalid_argument(where + ": labels must have one entry per row of F (" + std::to_string(nf) + "), got " +
+                                std::to_string(labels->size()));
   soup.label_set.resize(nf);
   soup.source.resize(nf);
   std::map<long long, int> set_of_label;  // label -> index of {label} in soup.label_sets

@@ -46,8 +46,8 @@ struct ArrangeStats {
   std::size_t orient3d_calls = 0, orient2d_calls = 0;  // in the classification stage
   int threads = 0;
   std::string classifier;
-  double t_load_s = 0, t_preprocess_s = 0, t_detect_s = 0, t_classify_s = 0, t_triangulate_s = 0,
-         t_output_s = 0, t_total_s = 0;
+  double t_load_s = 0, t_preprocess_s = 0, t_detect_s = 0, t_classify_s = 0, t_triangulate_s = 0, t_output_s = 0,
+         t_total_s = 0;
   double peak_rss_mb = 0;
 };
 
@@ -79,8 +79,7 @@ inline constexpr auto kArrangeStats = std::make_tuple(
     stat_entry("candidate_pairs", &ArrangeStats::candidate_pairs, 0, "triangle pairs with overlapping boxes"),
     stat_entry("intersecting_pairs", &ArrangeStats::intersecting_pairs, 0,
                "pairs that meet beyond what they share in the mesh"),
-    stat_entry("intersection_points", &ArrangeStats::intersection_points, 0,
-               "distinct new points of classification"),
+    stat_entry("intersection_points", &ArrangeStats::intersection_points, 0, "distinct new points of classification"),
     stat_entry("lpi", &ArrangeStats::intersection_points, 0, "the same (they are LPIs)"),
     stat_entry("tpi", &ArrangeStats::tpi, 0, "new points of triangulation (TPIs)"),
     stat_entry("segments", &ArrangeStats::segments, 0, "distinct constraint segments"),
@@ -112,7 +111,10 @@ struct StatKey {
   const char* meaning;
 };
 inline constexpr auto kArrangeStatKeys = std::apply(
-    [](const auto&... e) { return std::array<StatKey, sizeof...(e)>{StatKey{e.key, e.meaning}...}; }, kArrangeStats);
+    [](const auto&... e) {
+      return std::array<StatKey, sizeof...(e)>{StatKey{e.key, e.meaning}...};
+    },
+    kArrangeStats);
 
 template <class F>
 void for_each_stat(const ArrangeStats& s, F&& f) {

@@ -19,15 +19,24 @@ namespace arrangements {
 
 const char* to_string(InputErrorKind kind) noexcept {
   switch (kind) {
-    case InputErrorKind::unreadable_file: return "unreadable_file";
-    case InputErrorKind::unknown_format: return "unknown_format";
-    case InputErrorKind::unsupported_variant: return "unsupported_variant";
-    case InputErrorKind::malformed: return "malformed";
-    case InputErrorKind::non_finite_coordinate: return "non_finite_coordinate";
-    case InputErrorKind::index_out_of_range: return "index_out_of_range";
-    case InputErrorKind::too_few_corners: return "too_few_corners";
-    case InputErrorKind::empty_mesh: return "empty_mesh";
-    case InputErrorKind::too_large: return "too_large";
+    case InputErrorKind::unreadable_file:
+      return "unreadable_file";
+    case InputErrorKind::unknown_format:
+      return "unknown_format";
+    case InputErrorKind::unsupported_variant:
+      return "unsupported_variant";
+    case InputErrorKind::malformed:
+      return "malformed";
+    case InputErrorKind::non_finite_coordinate:
+      return "non_finite_coordinate";
+    case InputErrorKind::index_out_of_range:
+      return "index_out_of_range";
+    case InputErrorKind::too_few_corners:
+      return "too_few_corners";
+    case InputErrorKind::empty_mesh:
+      return "empty_mesh";
+    case InputErrorKind::too_large:
+      return "too_large";
   }
   return "unknown";
 }
@@ -40,7 +49,8 @@ FileBytes::FileBytes(const std::string& path) : path_(path) {
   if (ec || !std::filesystem::exists(status)) refuse(InputErrorKind::unreadable_file, path, "no such file");
   if (!std::filesystem::is_regular_file(status)) refuse(InputErrorKind::unreadable_file, path, "not a regular file");
   file_ = std::fopen(path.c_str(), "rb");
-  if (!file_) refuse(InputErrorKind::unreadable_file, path, std::string("cannot open the file: ") + std::strerror(errno));
+  if (!file_)
+    refuse(InputErrorKind::unreadable_file, path, std::string("cannot open the file: ") + std::strerror(errno));
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   size_ = ec ? 0 : static_cast<std::uint64_t>(size);
   buffer_.resize(std::size_t{1} << 20);
@@ -127,10 +137,18 @@ TriangleSoup load_triangle_soup(const std::string& path, std::uint32_t label) {
   if (in.size() == 0 && in.fill(1) == 0) refuse(InputErrorKind::empty_mesh, path, "the file is empty");
   detail::SoupBuilder builder(path);
   switch (format) {
-    case MeshFormat::obj: detail::read_obj(in, builder); break;
-    case MeshFormat::off: detail::read_off(in, builder); break;
-    case MeshFormat::stl: detail::read_stl(in, builder); break;
-    case MeshFormat::ply: detail::read_ply(in, builder); break;
+    case MeshFormat::obj:
+      detail::read_obj(in, builder);
+      break;
+    case MeshFormat::off:
+      detail::read_off(in, builder);
+      break;
+    case MeshFormat::stl:
+      detail::read_stl(in, builder);
+      break;
+    case MeshFormat::ply:
+      detail::read_ply(in, builder);
+      break;
   }
   if (builder.triangles.empty()) refuse(InputErrorKind::empty_mesh, path, "the mesh has no faces");
   builder.finish();
@@ -156,9 +174,9 @@ TriangleSoup load_triangle_soups(const std::vector<std::string>& paths) {
     }
     if (all.vertices.size() + one.vertices.size() > detail::kMaxIndexCount ||
         all.triangles.size() + one.triangles.size() > detail::kMaxIndexCount)
-      refuse(InputErrorKind::too_large, paths[i], "the input files together have more than " +
-                                                      std::to_string(detail::kMaxIndexCount) +
-                                                      " vertices or triangles");
+      refuse(InputErrorKind::too_large, paths[i],
+             "the input files together have more than " + std::to_string(detail::kMaxIndexCount) +
+                 " vertices or triangles");
     const int offset = static_cast<int>(all.vertices.size());
     const std::int64_t source_offset = static_cast<std::int64_t>(all.triangles.size());
     all.vertices.insert(all.vertices.end(), one.vertices.begin(), one.vertices.end());

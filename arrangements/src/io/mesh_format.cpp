@@ -20,10 +20,14 @@ std::string lowercase_extension(const std::string& path) {
 
 const char* extension(MeshFormat format) noexcept {
   switch (format) {
-    case MeshFormat::obj: return ".obj";
-    case MeshFormat::off: return ".off";
-    case MeshFormat::stl: return ".stl";
-    case MeshFormat::ply: return ".ply";
+    case MeshFormat::obj:
+      return ".obj";
+    case MeshFormat::off:
+      return ".off";
+    case MeshFormat::stl:
+      return ".stl";
+    case MeshFormat::ply:
+      return ".ply";
   }
   return "";
 }

@@ -34,7 +34,7 @@ class FileBytes {
   FileBytes& operator=(const FileBytes&) = delete;
 
   const std::string& path() const { return path_; }
-  std::uint64_t size() const { return size_; }  // the file's size when it was opened
+  std::uint64_t size() const { return size_; }        // the file's size when it was opened
   std::uint64_t offset() const { return consumed_; }  // bytes consumed so far
   std::uint64_t remaining() const { return size_ > consumed_ ? size_ - consumed_ : 0; }
 
@@ -179,7 +179,7 @@ class SoupBuilder {
   void add_polygon(std::span<const int> corners);
   const std::string& path_;
   std::vector<int> polygon_corners_;
-  std::vector<std::size_t> polygon_start_;    // into polygon_corners_, per polygon
+  std::vector<std::size_t> polygon_start_;     // into polygon_corners_, per polygon
   std::vector<std::size_t> polygon_triangle_;  // its first slot in triangles, per polygon
 };
 
@@ -193,8 +193,7 @@ void read_ply(FileBytes& in, SoupBuilder& out);
 [[noreturn]] inline void refuse_coordinate(const std::string& path, long line, RealParse r, const std::string& what,
                                            std::string_view token) {
   if (r == RealParse::non_finite)
-    refuse_at_line(InputErrorKind::non_finite_coordinate, path, line,
-                   what + quoted(token) + " is not a finite double");
+    refuse_at_line(InputErrorKind::non_finite_coordinate, path, line, what + quoted(token) + " is not a finite double");
   refuse_at_line(InputErrorKind::malformed, path, line, what + quoted(token) + " is not a number");
 }
 

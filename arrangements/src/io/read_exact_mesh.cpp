@@ -19,9 +19,9 @@ namespace arrangements {
 namespace {
 
 using detail::quoted;
+using detail::read_whole_file;
 using detail::refuse;
 using detail::refuse_at_line;
-using detail::read_whole_file;
 
 constexpr long kMaxDecimalExponent = 4096;
 
@@ -121,8 +121,8 @@ std::array<CGAL::Gmpq, 3> parse_vertex(const std::string& path, long line, detai
   for (int k = 0; k < 3; ++k) {
     const std::string_view token = tokens.next();
     if (token.empty())
-      refuse_at_line(InputErrorKind::malformed, path, line, "a vertex needs three coordinates, found " +
-                                                                std::to_string(k));
+      refuse_at_line(InputErrorKind::malformed, path, line,
+                     "a vertex needs three coordinates, found " + std::to_string(k));
     std::optional<CGAL::Gmpq> q = parse_number(token);
     if (!q)
       refuse_at_line(InputErrorKind::malformed, path, line,
@@ -287,8 +287,8 @@ ExactMesh read_off(const std::string& path, std::string_view text) {
                            (token.empty() ? std::string("the end of the line") : quoted(token)));
       if (index < 0 || static_cast<unsigned long long>(index) >= nv)
         refuse_at_line(InputErrorKind::index_out_of_range, path, lines.number(),
-                       "vertex index " + std::to_string(index) + " out of range (the file has " +
-                           std::to_string(nv) + " vertices)");
+                       "vertex index " + std::to_string(index) + " out of range (the file has " + std::to_string(nv) +
+                           " vertices)");
       corners.push_back(static_cast<int>(index));
     }
     if (!tokens.next().empty())

@@ -15,11 +15,11 @@ namespace {
 // Statements that are accepted and ignored (the free-form geometry and grouping statements
 // of the format); any other but v and f (e.g. "l") is refused.
 constexpr std::array<std::string_view, 45> kIgnoredStatements = {
-    "vt", "vn", "vp", "bevel", "lod", "ctech", "c_interp", "usemap", "usemtl", "stech",
-    "d_interp", "mtllib", "shadow_obj", "trace_obj", "o", "g", "s", "p", "cstype", "deg",
-    "step", "bmat", "con", "curv", "curv2", "surf", "parm", "trim", "hole", "scrv", "sp",
-    "end", "surf_1", "q0_1", "q1_1", "curv2d_1", "surf_2", "q0_2", "q1_2", "curv2d_2",
-    "bsp", "bzp", "cdc", "cdp", "res"};
+    "vt",     "vn",       "vp",     "bevel",      "lod",       "ctech",  "c_interp", "usemap", "usemtl",
+    "stech",  "d_interp", "mtllib", "shadow_obj", "trace_obj", "o",      "g",        "s",      "p",
+    "cstype", "deg",      "step",   "bmat",       "con",       "curv",   "curv2",    "surf",   "parm",
+    "trim",   "hole",     "scrv",   "sp",         "end",       "surf_1", "q0_1",     "q1_1",   "curv2d_1",
+    "surf_2", "q0_2",     "q1_2",   "curv2d_2",   "bsp",       "bzp",    "cdc",      "cdp",    "res"};
 
 bool is_ignored_statement(std::string_view keyword) {
   return std::find(kIgnoredStatements.begin(), kIgnoredStatements.end(), keyword) != kIgnoredStatements.end();

@@ -32,8 +32,8 @@ class OffReader {
     for (long long k = 0; k < h_.vertices; ++k) {
       const auto what = [k] { return "vertex " + std::to_string(k + 1); };
       if (!next_record())
-        refuse(InputErrorKind::malformed, path_, "the file ends after " + std::to_string(k) + " of " +
-                                                     std::to_string(h_.vertices) + " vertices");
+        refuse(InputErrorKind::malformed, path_,
+               "the file ends after " + std::to_string(k) + " of " + std::to_string(h_.vertices) + " vertices");
       if (entries_.size() < numbers_per_vertex)
         refuse_at_line(InputErrorKind::malformed, path_, line_,
                        what() + " has " + std::to_string(entries_.size()) + " numbers, " +
@@ -131,8 +131,8 @@ class OffReader {
   void read_face(long long k) {
     const auto what = [k] { return "face " + std::to_string(k + 1); };
     if (!next_record())
-      refuse(InputErrorKind::malformed, path_, "the file ends after " + std::to_string(k) + " of " +
-                                                   std::to_string(h_.faces) + " faces");
+      refuse(InputErrorKind::malformed, path_,
+             "the file ends after " + std::to_string(k) + " of " + std::to_string(h_.faces) + " faces");
     long long n = -1;
     if (!parse_integer(entries_[0], n) || n < 0)
       refuse_at_line(InputErrorKind::malformed, path_, line_,

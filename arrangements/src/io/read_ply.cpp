@@ -34,24 +34,40 @@ std::optional<PlyType> ply_type(std::string_view name) {
 
 std::size_t size_of(PlyType t) {
   switch (t) {
-    case PlyType::int8: case PlyType::uint8: return 1;
-    case PlyType::int16: case PlyType::uint16: return 2;
-    case PlyType::int32: case PlyType::uint32: case PlyType::float32: return 4;
-    case PlyType::float64: return 8;
+    case PlyType::int8:
+    case PlyType::uint8:
+      return 1;
+    case PlyType::int16:
+    case PlyType::uint16:
+      return 2;
+    case PlyType::int32:
+    case PlyType::uint32:
+    case PlyType::float32:
+      return 4;
+    case PlyType::float64:
+      return 8;
   }
   return 0;
 }
 
 const char* type_name(PlyType t) {
   switch (t) {
-    case PlyType::int8: return "char";
-    case PlyType::uint8: return "uchar";
-    case PlyType::int16: return "short";
-    case PlyType::uint16: return "ushort";
-    case PlyType::int32: return "int";
-    case PlyType::uint32: return "uint";
-    case PlyType::float32: return "float";
-    case PlyType::float64: return "double";
+    case PlyType::int8:
+      return "char";
+    case PlyType::uint8:
+      return "uchar";
+    case PlyType::int16:
+      return "short";
+    case PlyType::uint16:
+      return "ushort";
+    case PlyType::int32:
+      return "int";
+    case PlyType::uint32:
+      return "uint";
+    case PlyType::float32:
+      return "float";
+    case PlyType::float64:
+      return "double";
   }
   return "?";
 }
@@ -109,10 +125,14 @@ PlyHeader read_header(const std::string& path, LineReader& lines) {
       const std::string_view format = tokens.next();
       if (tokens.next().empty())
         refuse_at_line(InputErrorKind::malformed, path, number, "expected 'format <encoding> <version>'");
-      if (format == "ascii") h.format = PlyFormat::ascii;
-      else if (format == "binary_little_endian") h.format = PlyFormat::binary_little_endian;
-      else if (format == "binary_big_endian") h.format = PlyFormat::binary_big_endian;
-      else refuse_at_line(InputErrorKind::malformed, path, number, "unknown PLY encoding " + quoted(format));
+      if (format == "ascii")
+        h.format = PlyFormat::ascii;
+      else if (format == "binary_little_endian")
+        h.format = PlyFormat::binary_little_endian;
+      else if (format == "binary_big_endian")
+        h.format = PlyFormat::binary_big_endian;
+      else
+        refuse_at_line(InputErrorKind::malformed, path, number, "unknown PLY encoding " + quoted(format));
       format_seen = true;
     } else if (keyword == "element") {
       PlyElement e;
@@ -234,12 +254,24 @@ class BodyReader {
     in_.consume(n);
     Value v;
     switch (t) {
-      case PlyType::int8: v.integer = static_cast<std::int8_t>(bits); break;
-      case PlyType::uint8: v.integer = static_cast<std::uint8_t>(bits); break;
-      case PlyType::int16: v.integer = static_cast<std::int16_t>(bits); break;
-      case PlyType::uint16: v.integer = static_cast<std::uint16_t>(bits); break;
-      case PlyType::int32: v.integer = static_cast<std::int32_t>(bits); break;
-      case PlyType::uint32: v.integer = static_cast<std::uint32_t>(bits); break;
+      case PlyType::int8:
+        v.integer = static_cast<std::int8_t>(bits);
+        break;
+      case PlyType::uint8:
+        v.integer = static_cast<std::uint8_t>(bits);
+        break;
+      case PlyType::int16:
+        v.integer = static_cast<std::int16_t>(bits);
+        break;
+      case PlyType::uint16:
+        v.integer = static_cast<std::uint16_t>(bits);
+        break;
+      case PlyType::int32:
+        v.integer = static_cast<std::int32_t>(bits);
+        break;
+      case PlyType::uint32:
+        v.integer = static_cast<std::uint32_t>(bits);
+        break;
       case PlyType::float32: {
         const std::uint32_t b32 = static_cast<std::uint32_t>(bits);
         float f;
@@ -247,7 +279,9 @@ class BodyReader {
         v.real = f;
         break;
       }
-      case PlyType::float64: std::memcpy(&v.real, &bits, sizeof v.real); break;
+      case PlyType::float64:
+        std::memcpy(&v.real, &bits, sizeof v.real);
+        break;
     }
     if (p.role >= Role::x && p.role <= Role::z && !std::isfinite(v.real))
       refuse(InputErrorKind::non_finite_coordinate, path_,
@@ -269,12 +303,24 @@ class BodyReader {
     Value v;
     bool ok = false;
     switch (t) {
-      case PlyType::int8: ok = integer<std::int8_t>(token, v); break;
-      case PlyType::uint8: ok = integer<std::uint8_t>(token, v); break;
-      case PlyType::int16: ok = integer<std::int16_t>(token, v); break;
-      case PlyType::uint16: ok = integer<std::uint16_t>(token, v); break;
-      case PlyType::int32: ok = integer<std::int32_t>(token, v); break;
-      case PlyType::uint32: ok = integer<std::uint32_t>(token, v); break;
+      case PlyType::int8:
+        ok = integer<std::int8_t>(token, v);
+        break;
+      case PlyType::uint8:
+        ok = integer<std::uint8_t>(token, v);
+        break;
+      case PlyType::int16:
+        ok = integer<std::int16_t>(token, v);
+        break;
+      case PlyType::uint16:
+        ok = integer<std::uint16_t>(token, v);
+        break;
+      case PlyType::int32:
+        ok = integer<std::int32_t>(token, v);
+        break;
+      case PlyType::uint32:
+        ok = integer<std::uint32_t>(token, v);
+        break;
       case PlyType::float32:
       case PlyType::float64: {
         RealParse r;
@@ -287,17 +333,17 @@ class BodyReader {
         }
         // Non-finite values are refused in coordinates only (other properties are skipped).
         if (r == RealParse::non_finite && p.role >= Role::x && p.role <= Role::z)
-          refuse_at_line(InputErrorKind::non_finite_coordinate, path_, tokens_.line(),
-                         what.str() + ": property '" + p.name + "' value " + quoted(token) + " is not a finite " +
-                             type_name(t));
+          refuse_at_line(
+              InputErrorKind::non_finite_coordinate, path_, tokens_.line(),
+              what.str() + ": property '" + p.name + "' value " + quoted(token) + " is not a finite " + type_name(t));
         ok = r != RealParse::not_a_number;
         break;
       }
     }
     if (!ok)
-      refuse_at_line(InputErrorKind::malformed, path_, tokens_.line(),
-                     what.str() + ": property '" + p.name + "' value " + quoted(token) + " is not a valid " +
-                         type_name(t));
+      refuse_at_line(
+          InputErrorKind::malformed, path_, tokens_.line(),
+          what.str() + ": property '" + p.name + "' value " + quoted(token) + " is not a valid " + type_name(t));
     return v;
   }
 
@@ -330,14 +376,16 @@ void read_body(FileBytes& in, LineReader& lines, const PlyHeader& h, SoupBuilder
       for (const PlyProperty& p : e.properties) {
         if (!p.list) {
           const Value value = body.read(p.type, what, p);
-          if (p.role >= Role::x && p.role <= Role::z) v[static_cast<int>(p.role) - static_cast<int>(Role::x)] = value.real;
+          if (p.role >= Role::x && p.role <= Role::z)
+            v[static_cast<int>(p.role) - static_cast<int>(Role::x)] = value.real;
           continue;
         }
         const long long n = body.read(p.count_type, what, p).integer;
         // Each entry takes at least one byte: this bounds the list.
         if (n < 0 || static_cast<unsigned long long>(n) > body.remaining_bytes())
-          refuse(InputErrorKind::malformed, path, body.location(what.str() + ": list length " + std::to_string(n) +
-                                                                " is negative or exceeds the rest of the file"));
+          refuse(InputErrorKind::malformed, path,
+                 body.location(what.str() + ": list length " + std::to_string(n) +
+                               " is negative or exceeds the rest of the file"));
         const bool indices = p.role == Role::face_indices;
         if (indices && n < 3)
           refuse(InputErrorKind::too_few_corners, path,

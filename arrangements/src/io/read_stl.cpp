@@ -14,7 +14,7 @@
 namespace arrangements::detail {
 namespace {
 
-constexpr std::size_t kBinaryHeaderBytes = 84;   // 80-byte comment + uint32 triangle count
+constexpr std::size_t kBinaryHeaderBytes = 84;    // 80-byte comment + uint32 triangle count
 constexpr std::size_t kBinaryTriangleBytes = 50;  // normal, 3 corners (12 floats), uint16
 
 std::uint32_t read_le_uint32(const char* at) {
@@ -76,18 +76,19 @@ class PositionIndex {
     const std::uint64_t expected = kBinaryHeaderBytes + std::uint64_t{declared} * kBinaryTriangleBytes;
     refuse(InputErrorKind::malformed, in.path(),
            "neither an ASCII STL (which begins with 'solid') nor a binary STL of the right size: a binary header "
-           "declaring " + std::to_string(declared) + " triangles needs " + std::to_string(expected) +
-               " bytes, the file has " + std::to_string(in.size()));
+           "declaring " +
+               std::to_string(declared) + " triangles needs " + std::to_string(expected) + " bytes, the file has " +
+               std::to_string(in.size()));
   }
   refuse(InputErrorKind::malformed, in.path(),
-         "not an ASCII STL (which begins with 'solid') and too short for a binary STL (" +
-             std::to_string(in.size()) + " bytes, the binary header alone has 84)");
+         "not an ASCII STL (which begins with 'solid') and too short for a binary STL (" + std::to_string(in.size()) +
+             " bytes, the binary header alone has 84)");
 }
 
 void read_binary(FileBytes& in, SoupBuilder& out, std::uint32_t n) {
   if (n > kMaxIndexCount)
-    refuse(InputErrorKind::too_large, in.path(), std::to_string(n) + " triangles (at most " +
-                                                     std::to_string(kMaxIndexCount) + " are supported)");
+    refuse(InputErrorKind::too_large, in.path(),
+           std::to_string(n) + " triangles (at most " + std::to_string(kMaxIndexCount) + " are supported)");
   in.consume(kBinaryHeaderBytes);
   out.triangles.reserve(n);
   PositionIndex positions;
@@ -144,7 +145,8 @@ void read_ascii(FileBytes& in, SoupBuilder& out, std::uint32_t declared) {
   bool in_solid = false, solid_seen = false;
   for (; !token.empty(); token = tokens.next()) {
     if (equals_ignoring_case(token, "solid")) {
-      if (in_solid) refuse_at_line(InputErrorKind::malformed, path, tokens.line(), "'solid' before the previous 'endsolid'");
+      if (in_solid)
+        refuse_at_line(InputErrorKind::malformed, path, tokens.line(), "'solid' before the previous 'endsolid'");
       in_solid = true;
     } else if (equals_ignoring_case(token, "endsolid")) {
       in_solid = false;

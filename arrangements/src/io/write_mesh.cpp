@@ -262,10 +262,17 @@ void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOpti
 
   AtomicFile file(path);
   switch (format) {
-    case MeshFormat::obj: write_obj(file, mesh, rounded, options.exact); break;
-    case MeshFormat::off: write_off(file, mesh, rounded, options.exact); break;
-    case MeshFormat::ply: write_ply(file, mesh, rounded); break;
-    case MeshFormat::stl: throw std::logic_error("write_mesh: .stl is not in kWriteFormats");
+    case MeshFormat::obj:
+      write_obj(file, mesh, rounded, options.exact);
+      break;
+    case MeshFormat::off:
+      write_off(file, mesh, rounded, options.exact);
+      break;
+    case MeshFormat::ply:
+      write_ply(file, mesh, rounded);
+      break;
+    case MeshFormat::stl:
+      throw std::logic_error("write_mesh: .stl is not in kWriteFormats");
   }
   file.finish();
   std::optional<AtomicFile> side;

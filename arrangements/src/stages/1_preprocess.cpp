@@ -41,9 +41,9 @@ struct PositionHash {
 
 struct CornerSetHash {
   std::size_t operator()(const Tri& t) const {
-    return static_cast<std::size_t>(mix(static_cast<std::uint32_t>(t[0]) ^
-                                        mix((static_cast<std::uint64_t>(static_cast<std::uint32_t>(t[1])) << 32) ^
-                                            static_cast<std::uint32_t>(t[2]))));
+    return static_cast<std::size_t>(mix(
+        static_cast<std::uint32_t>(t[0]) ^
+        mix((static_cast<std::uint64_t>(static_cast<std::uint32_t>(t[1])) << 32) ^ static_cast<std::uint32_t>(t[2]))));
   }
 };
 

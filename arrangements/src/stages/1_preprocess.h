@@ -40,8 +40,8 @@
 // the degrees of implicit-point predicates), and tiny models are lifted away from the
 // underflow range. k < 0 can push small coordinates of a model with a huge dynamic range
 // into the subnormal range, where they would be rounded: then nothing is scaled
-// (scale_exponent 0; the later stages are exact at any magnitude, only slower). All-zero coordinates (no triangle survives
-// anyway) give k = 0.
+// (scale_exponent 0; the later stages are exact at any magnitude, only slower). All-zero coordinates (no triangle
+// survives anyway) give k = 0.
 //
 // Cost: expected O(#V + #F + total labels of duplicates) (hashing), plus one to three exact
 // orient2d per triangle; distinct label sets are kept in a std::map.

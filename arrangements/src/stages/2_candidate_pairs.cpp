@@ -11,8 +11,8 @@
 
 namespace arrangements {
 
-std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                                                 int threads, std::span<const std::int64_t> polygon) {
+std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F, int threads,
+                                                 std::span<const std::int64_t> polygon) {
   if (threads > kMaxThreads)
     throw std::invalid_argument("candidate_pairs: threads must be at most " + std::to_string(kMaxThreads));
   return tritri::overlapping_triangle_pairs(V, F, threads, polygon);

@@ -26,7 +26,7 @@
 
 namespace arrangements {
 
-std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                                                 int threads = 0, std::span<const std::int64_t> polygon = {});
+std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F, int threads = 0,
+                                                 std::span<const std::int64_t> polygon = {});
 
 }  // namespace arrangements

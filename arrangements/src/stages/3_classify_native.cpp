@@ -152,8 +152,7 @@ class NativePair {
       if (side_of_other[i] * side_of_other[next(i)] >= 0) continue;
       const int sp = o2d(*other.v[i], *other.v[next(i)], p, other.plane);
       const int sq = o2d(*other.v[i], *other.v[next(i)], q, other.plane);
-      if (sp * sq < 0)
-        add(k, Location::edge(e), Location::edge(i), /*self_edge_in_other_plane=*/true);
+      if (sp * sq < 0) add(k, Location::edge(e), Location::edge(i), /*self_edge_in_other_plane=*/true);
     }
   }
 
@@ -233,8 +232,8 @@ bool classify_pair_native(const K& k, const std::vector<Vec3>& V, const std::vec
   return NativePair<K>(k, V, F, ta, tb, out).run();
 }
 
-template bool classify_pair_native(const tritri::DoubleKernel&, const std::vector<Vec3>&, const std::vector<Tri>&,
-                                   int, int, PairIntersection&);
+template bool classify_pair_native(const tritri::DoubleKernel&, const std::vector<Vec3>&, const std::vector<Tri>&, int,
+                                   int, PairIntersection&);
 template bool classify_pair_native(const tritri::CountingKernel<tritri::DoubleKernel>&, const std::vector<Vec3>&,
                                    const std::vector<Tri>&, int, int, PairIntersection&);
 

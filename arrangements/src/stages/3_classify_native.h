@@ -35,9 +35,8 @@ bool classify_pair_native(const K& k, const std::vector<Vec3>& V, const std::vec
                           PairIntersection& out);
 extern template bool classify_pair_native(const tritri::DoubleKernel&, const std::vector<Vec3>&,
                                           const std::vector<Tri>&, int, int, PairIntersection&);
-extern template bool classify_pair_native(const tritri::CountingKernel<tritri::DoubleKernel>&,
-                                          const std::vector<Vec3>&, const std::vector<Tri>&, int, int,
-                                          PairIntersection&);
+extern template bool classify_pair_native(const tritri::CountingKernel<tritri::DoubleKernel>&, const std::vector<Vec3>&,
+                                          const std::vector<Tri>&, int, int, PairIntersection&);
 
 inline bool classify_pair_native(const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
                                  PairIntersection& out) {

@@ -40,8 +40,8 @@ void classify_range(const K& k, const std::vector<Vec3>& V, const std::vector<Tr
 }  // namespace
 
 std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                                             const std::vector<std::pair<int, int>>& pairs,
-                                             Classifier classifier, tritri::PredicateCounts* counts) {
+                                             const std::vector<std::pair<int, int>>& pairs, Classifier classifier,
+                                             tritri::PredicateCounts* counts) {
   // Fixed chunks, concatenated in order (the loop tritri's batch API uses too): the
   // output does not depend on scheduling.
   constexpr std::size_t chunk = 2048;

@@ -31,7 +31,7 @@
 namespace arrangements {
 
 std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                                             const std::vector<std::pair<int, int>>& pairs,
-                                             Classifier classifier, tritri::PredicateCounts* counts = nullptr);
+                                             const std::vector<std::pair<int, int>>& pairs, Classifier classifier,
+                                             tritri::PredicateCounts* counts = nullptr);
 
 }  // namespace arrangements

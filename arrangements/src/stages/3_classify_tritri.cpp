@@ -35,11 +35,31 @@ bool classify_pair_tritri(const K& k, const std::vector<Vec3>& V, const std::vec
     PairPoint q;
     const int i = p.id0, j = p.id1;
     switch (p.type) {
-      case T::VA_ON_VB: q.vertex = a[i]; q.in[0] = loc(L::Vertex, i); q.in[1] = loc(L::Vertex, j); break;
-      case T::VA_ON_EB: q.vertex = a[i]; q.in[0] = loc(L::Vertex, i); q.in[1] = loc(L::Edge, j); break;
-      case T::VB_ON_EA: q.vertex = b[i]; q.in[0] = loc(L::Edge, j); q.in[1] = loc(L::Vertex, i); break;
-      case T::VA_ON_TB: q.vertex = a[i]; q.in[0] = loc(L::Vertex, i); q.in[1] = loc(L::Interior, -1); break;
-      case T::VB_ON_TA: q.vertex = b[i]; q.in[0] = loc(L::Interior, -1); q.in[1] = loc(L::Vertex, i); break;
+      case T::VA_ON_VB:
+        q.vertex = a[i];
+        q.in[0] = loc(L::Vertex, i);
+        q.in[1] = loc(L::Vertex, j);
+        break;
+      case T::VA_ON_EB:
+        q.vertex = a[i];
+        q.in[0] = loc(L::Vertex, i);
+        q.in[1] = loc(L::Edge, j);
+        break;
+      case T::VB_ON_EA:
+        q.vertex = b[i];
+        q.in[0] = loc(L::Edge, j);
+        q.in[1] = loc(L::Vertex, i);
+        break;
+      case T::VA_ON_TB:
+        q.vertex = a[i];
+        q.in[0] = loc(L::Vertex, i);
+        q.in[1] = loc(L::Interior, -1);
+        break;
+      case T::VB_ON_TA:
+        q.vertex = b[i];
+        q.in[0] = loc(L::Interior, -1);
+        q.in[1] = loc(L::Vertex, i);
+        break;
       case T::EA_CROSS_TB:
         q.lpi = make_lpi_key(a[i], a[next(i)], b[0], b[1], b[2]);
         q.in[0] = loc(L::Edge, i);
@@ -67,8 +87,8 @@ bool classify_pair_tritri(const K& k, const std::vector<Vec3>& V, const std::vec
   return true;
 }
 
-template bool classify_pair_tritri(const tritri::DoubleKernel&, const std::vector<Vec3>&, const std::vector<Tri>&,
-                                   int, int, PairIntersection&);
+template bool classify_pair_tritri(const tritri::DoubleKernel&, const std::vector<Vec3>&, const std::vector<Tri>&, int,
+                                   int, PairIntersection&);
 template bool classify_pair_tritri(const tritri::CountingKernel<tritri::DoubleKernel>&, const std::vector<Vec3>&,
                                    const std::vector<Tri>&, int, int, PairIntersection&);
 

@@ -21,8 +21,8 @@ namespace arrangements {
 
 // Where a point lies in one triangle of the pair: tritri's Location (vertex k, edge k from
 // vertex k to vertex (k+1)%3, Interior; never Outside in a record), with closed_edges.
-using tritri::Location;
 using tritri::closed_edges;
+using tritri::Location;
 
 // An LPI by vertex ids: line (p, q), plane (r, s, t). Canonical form: p < q, r < s < t.
 struct LpiKey {
@@ -42,7 +42,7 @@ inline LpiKey make_lpi_key(int p, int q, int r, int s, int t) {
 struct PairPoint {
   int vertex = -1;  // an existing vertex id, or -1 for a new point given by `lpi`
   LpiKey lpi;
-  Location in[2];   // location in the pair's first and second triangle
+  Location in[2];  // location in the pair's first and second triangle
 };
 
 struct PairIntersection {

@@ -132,8 +132,10 @@ void share_coplanar(const std::vector<Vec3>& V, const std::vector<Tri>& F, Inter
     Additions& a = add[t];
     auto place = [&](int x) {
       const Location where = locate(g.points, tri, plane, orientation, x);
-      if (where.kind == Location::Interior) a.inside.push_back(x);
-      else if (where.kind == Location::Edge) a.on_edge.push_back({g.triangle_edges[t][where.id], x});
+      if (where.kind == Location::Interior)
+        a.inside.push_back(x);
+      else if (where.kind == Location::Edge)
+        a.on_edge.push_back({g.triangle_edges[t][where.id], x});
     };
     for (int u : g.coplanar_partners[t]) {
       for (int x : g.triangle_points[u]) place(x);
@@ -206,9 +208,8 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   std::vector<int> vertex_match(keys.size(), -1);
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
     if (representative[i] != static_cast<int>(i)) return;
-    auto it = std::lower_bound(by_position.begin(), by_position.end(), 0, [&](int vid, int) {
-      return tritri::compare_xyz(g.points[vid], lpis[i]) < 0;
-    });
+    auto it = std::lower_bound(by_position.begin(), by_position.end(), 0,
+                               [&](int vid, int) { return tritri::compare_xyz(g.points[vid], lpis[i]) < 0; });
     if (it != by_position.end() && tritri::compare_xyz(g.points[*it], lpis[i]) == 0) vertex_match[i] = *it;
   });
   for (std::size_t i = 0; i < keys.size(); ++i) {

@@ -46,7 +46,7 @@ struct SegmentSupport {
 struct IntersectionGraph {
   int num_input_vertices = 0;
   std::vector<tritri::ImplicitPoint> points;
-  std::vector<std::array<int, 2>> edges;          // unique undirected edges, smaller id first
+  std::vector<std::array<int, 2>> edges;           // unique undirected edges, smaller id first
   std::vector<std::array<int, 3>> triangle_edges;  // edge id of each triangle's edge k
   std::vector<std::vector<int>> edge_points;
   std::vector<std::vector<int>> triangle_points;
@@ -57,8 +57,8 @@ struct IntersectionGraph {
   // Statistics.
   std::size_t intersecting_pairs = 0;
   std::size_t coplanar_pairs = 0;
-  std::size_t new_points = 0;       // distinct new points (LPIs)
-  std::size_t segments = 0;         // distinct constraint segments over all triangles
+  std::size_t new_points = 0;  // distinct new points (LPIs)
+  std::size_t segments = 0;    // distinct constraint segments over all triangles
 };
 
 // Inputs:  V, F the preprocessed soup (merged vertices, no degenerate triangles);

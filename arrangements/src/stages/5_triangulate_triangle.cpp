@@ -36,13 +36,12 @@ inline int prev3(int k) { return k == 0 ? 2 : k - 1; }
 // triangle's orientation there, so that every local triangle is positive ("CCW").
 class LocalTriangulation {
  public:
-  std::deque<ImplicitPoint> pts;    // local vertices (a deque: off[i] points into it)
+  std::deque<ImplicitPoint> pts;         // local vertices (a deque: off[i] points into it)
   std::vector<tritri::OffsetPoint> off;  // their offset coordinates (origin: a corner)
   std::vector<LocalTriangle> tris;
-  std::vector<int> vtri;            // a triangle incident to each vertex
+  std::vector<int> vtri;  // a triangle incident to each vertex
 
-  LocalTriangulation(tritri::Plane plane, int sign, const Vec3& origin)
-      : plane_(plane), sign_(sign), origin_(origin) {}
+  LocalTriangulation(tritri::Plane plane, int sign, const Vec3& origin) : plane_(plane), sign_(sign), origin_(origin) {}
 
   int orient(int a, int b, int c) const {
     return sign_ * tritri::to_int(tritri::orient2d(off[a], off[b], off[c], plane_));
@@ -64,8 +63,10 @@ class LocalTriangulation {
   // Inserts vertex p (inside the closed input triangle, distinct from every vertex).
   void insert_point(int p) {
     const auto [t, edge] = locate(p);
-    if (edge < 0) split_triangle(t, p);
-    else split_edge(t, edge, p);
+    if (edge < 0)
+      split_triangle(t, p);
+    else
+      split_edge(t, edge, p);
   }
 
   // Inserts vertex p known to lie inside the boundary edge (u, w).
@@ -374,7 +375,8 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
       const int c = tritri::compare_xyz(g.points[x], g.points[y]);
       return c != 0 ? c < 0 : x < y;
     });
-    if (tritri::compare_xyz(g.points[tri[k]], g.points[tri[(k + 1) % 3]]) > 0) std::reverse(on_edge.begin(), on_edge.end());
+    if (tritri::compare_xyz(g.points[tri[k]], g.points[tri[(k + 1) % 3]]) > 0)
+      std::reverse(on_edge.begin(), on_edge.end());
     int prev = local_of.at(tri[k]);
     const int end = local_of.at(tri[(k + 1) % 3]);
     for (int x : on_edge) {
@@ -415,8 +417,7 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
   auto crossing = [&](int c1, int c2) {
     const auto& A = support[c1];
     const auto& B = support[c2];
-    const ImplicitPoint x =
-        ImplicitPoint::tpi(V[tri[0]], V[tri[1]], V[tri[2]], A[0], A[1], A[2], B[0], B[1], B[2]);
+    const ImplicitPoint x = ImplicitPoint::tpi(V[tri[0]], V[tri[1]], V[tri[2]], A[0], A[1], A[2], B[0], B[1], B[2]);
     piece.tpis.push_back(x);
     global.push_back(-static_cast<int>(piece.tpis.size()));
     return lt.add_vertex(x);
@@ -446,7 +447,8 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
       for (int k = 0; k < 3 && inside; ++k)
         for (int e = 0; e < 3 && inside; ++e)
           inside = partner_sign[q] * tritri::to_int(tritri::orient2d(g.points[u[e]], g.points[u[(e + 1) % 3]],
-                                                                      lt.pts[T.v[k]], plane)) >= 0;
+                                                                     lt.pts[T.v[k]], plane)) >=
+                   0;
       if (inside) cover.push_back(partners[q]);
     }
     if (!cover.empty() && cover.front() < t) continue;  // emitted by the smallest covering triangle

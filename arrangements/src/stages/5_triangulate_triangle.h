@@ -24,10 +24,10 @@ namespace arrangements {
 
 // What one input triangle contributes.
 struct Piece {
-  std::vector<Tri> triangles;       // local ids: < 0 means new TPI (-1 - k), else graph id
+  std::vector<Tri> triangles;               // local ids: < 0 means new TPI (-1 - k), else graph id
   std::vector<tritri::ImplicitPoint> tpis;  // the new TPIs, local numbering
-  std::vector<int> covered_by;      // per triangle: -1 for t itself only, else index into covers
-  std::vector<std::vector<int>> covers;  // distinct sets of soup triangles covering (t included)
+  std::vector<int> covered_by;              // per triangle: -1 for t itself only, else index into covers
+  std::vector<std::vector<int>> covers;     // distinct sets of soup triangles covering (t included)
 };
 
 Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, int t);

@@ -44,7 +44,8 @@ TriangleSoup uv_sphere(const Vec3& c, double r, int rings, int segments) {
 
 TriangleSoup box(const Vec3& lo, const Vec3& hi) {
   TriangleSoup s;
-  for (int i = 0; i < 8; ++i) s.vertices.push_back({i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]});
+  for (int i = 0; i < 8; ++i)
+    s.vertices.push_back({i & 1 ? hi[0] : lo[0], i & 2 ? hi[1] : lo[1], i & 4 ? hi[2] : lo[2]});
   // Outward-oriented faces, two triangles each.
   const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (const auto& q : quads) {

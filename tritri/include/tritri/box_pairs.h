@@ -59,7 +59,8 @@ namespace detail::box_pairs {
 using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int, CGAL::Box_intersection_d::ID_EXPLICIT>;
 using Pairs = std::vector<std::pair<int, int>>;
 
-inline std::vector<Box> triangle_boxes(std::span<const std::array<double, 3>> V, std::span<const std::array<int, 3>> F) {
+inline std::vector<Box> triangle_boxes(std::span<const std::array<double, 3>> V,
+                                       std::span<const std::array<int, 3>> F) {
   std::vector<Box> boxes;
   boxes.reserve(F.size());
   for (std::size_t t = 0; t < F.size(); ++t) {
@@ -133,7 +134,8 @@ using RBox = bg::model::box<RPoint>;
 using RTree = bgi::rtree<std::pair<RBox, int>, bgi::quadratic<16>>;
 
 inline RBox rbox(const Box& b) {
-  return {RPoint(b.min_coord(0), b.min_coord(1), b.min_coord(2)), RPoint(b.max_coord(0), b.max_coord(1), b.max_coord(2))};
+  return {RPoint(b.min_coord(0), b.min_coord(1), b.min_coord(2)),
+          RPoint(b.max_coord(0), b.max_coord(1), b.max_coord(2))};
 }
 
 // With groups: a group's triangles never pair with each other, and a big group (a polygon
@@ -143,7 +145,7 @@ inline RBox rbox(const Box& b) {
 // querying the group's R-tree of triangle boxes (closed boxes: touching counts, as above)
 // with the other item's triangle boxes.
 inline Pairs overlapping_pairs_with_groups(const std::vector<Box>& boxes, std::span<const std::int64_t> group,
-                                          int workers) {
+                                           int workers) {
   std::map<std::int64_t, std::vector<int>> faces_by_id;  // deterministic face order
   std::vector<std::vector<int>> items;                   // triangles of each item
   for (std::size_t t = 0; t < boxes.size(); ++t) {
@@ -198,7 +200,8 @@ inline std::vector<std::pair<int, int>> overlapping_triangle_pairs(std::span<con
                                                                    std::span<const std::int64_t> group = {}) {
   using namespace detail::box_pairs;
   if (!group.empty() && group.size() != F.size())
-    throw std::invalid_argument("tritri::overlapping_triangle_pairs: group must be empty or have one entry per triangle");
+    throw std::invalid_argument(
+        "tritri::overlapping_triangle_pairs: group must be empty or have one entry per triangle");
   if (F.size() < 2) return {};
   std::vector<Box> boxes = triangle_boxes(V, F);
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);

@@ -39,9 +39,7 @@ struct CgalKernel {
     }
   }
   static bool equal(const Point& a, const Point& b) { return a == b; }
-  static bool less(const Point& a, const Point& b) {
-    return CGAL::compare_xyz(a, b) == CGAL::SMALLER;
-  }
+  static bool less(const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; }
 };
 
 }  // namespace tritri

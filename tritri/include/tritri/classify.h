@@ -54,13 +54,34 @@ inline void edge_masks(const IntersectionPoint& p, int& ma, int& mb) noexcept {
   const int i = p.id0, j = p.id1;
   auto vertex_edges = [](int v) { return closed_edges(Location::vertex(v)); };
   switch (p.type) {
-    case Type::VA_ON_VB: ma = vertex_edges(i); mb = vertex_edges(j); break;
-    case Type::VA_ON_EB: ma = vertex_edges(i); mb = 1 << j; break;
-    case Type::VB_ON_EA: ma = 1 << j; mb = vertex_edges(i); break;
-    case Type::VA_ON_TB: ma = vertex_edges(i); mb = 0; break;
-    case Type::VB_ON_TA: ma = 0; mb = vertex_edges(i); break;
-    case Type::EA_CROSS_EB: ma = 1 << i; mb = 1 << j; break;
-    default: ma = 0; mb = 0; break;  // edge-face crossings do not occur in coplanar pairs
+    case Type::VA_ON_VB:
+      ma = vertex_edges(i);
+      mb = vertex_edges(j);
+      break;
+    case Type::VA_ON_EB:
+      ma = vertex_edges(i);
+      mb = 1 << j;
+      break;
+    case Type::VB_ON_EA:
+      ma = 1 << j;
+      mb = vertex_edges(i);
+      break;
+    case Type::VA_ON_TB:
+      ma = vertex_edges(i);
+      mb = 0;
+      break;
+    case Type::VB_ON_TA:
+      ma = 0;
+      mb = vertex_edges(i);
+      break;
+    case Type::EA_CROSS_EB:
+      ma = 1 << i;
+      mb = 1 << j;
+      break;
+    default:
+      ma = 0;
+      mb = 0;
+      break;  // edge-face crossings do not occur in coplanar pairs
   }
 }
 
@@ -127,13 +148,13 @@ class Classifier {
     if (c2 == 0) return add({Type::EA_CROSS_EB, int8(hi_a), int8(lo_b)});
     // The intervals overlap properly: [max(lo_a, lo_b), min(hi_a, hi_b)].
     const int c3 = compare_on_line(lo_a, lo_b);
-    add(c3 > 0 ? IntersectionPoint{Type::EA_CROSS_TB, int8(lo_a), -1}
-                : c3 < 0 ? IntersectionPoint{Type::EB_CROSS_TA, int8(lo_b), -1}
-                         : IntersectionPoint{Type::EA_CROSS_EB, int8(lo_a), int8(lo_b)});
+    add(c3 > 0   ? IntersectionPoint{Type::EA_CROSS_TB, int8(lo_a), -1}
+        : c3 < 0 ? IntersectionPoint{Type::EB_CROSS_TA, int8(lo_b), -1}
+                 : IntersectionPoint{Type::EA_CROSS_EB, int8(lo_a), int8(lo_b)});
     const int c4 = compare_on_line(hi_a, hi_b);
-    add(c4 < 0 ? IntersectionPoint{Type::EA_CROSS_TB, int8(hi_a), -1}
-                : c4 > 0 ? IntersectionPoint{Type::EB_CROSS_TA, int8(hi_b), -1}
-                         : IntersectionPoint{Type::EA_CROSS_EB, int8(hi_a), int8(hi_b)});
+    add(c4 < 0   ? IntersectionPoint{Type::EA_CROSS_TB, int8(hi_a), -1}
+        : c4 > 0 ? IntersectionPoint{Type::EB_CROSS_TA, int8(hi_b), -1}
+                 : IntersectionPoint{Type::EA_CROSS_EB, int8(hi_a), int8(hi_b)});
   }
 
   // --- non-coplanar, some vertex in the other plane ------------------------------------
@@ -237,22 +258,26 @@ class Classifier {
 
   void coplanar() {
     const auto [plane, sa] = tritri::projection(k_, *a_[0], *a_[1], *a_[2]);
-    if (sa == 0) { r_.degenerate = true; return; }
+    if (sa == 0) {
+      r_.degenerate = true;
+      return;
+    }
     const int sb = to_int(k_.orient2d(*b_[0], *b_[1], *b_[2], plane));
-    if (sb == 0) { r_.degenerate = true; return; }
+    if (sb == 0) {
+      r_.degenerate = true;
+      return;
+    }
     r_.coplanar = true;
 
     // side_b[i][j]: side of A's edge line i that B's vertex j is on (+1: A's side);
     // side_a[j][i]: side of B's edge line j that A's vertex i is on.
     int side_b[3][3], side_a[3][3];
     for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j)
-        side_b[i][j] = sa * to_int(k_.orient2d(*a_[i], *a_[next(i)], *b_[j], plane));
+      for (int j = 0; j < 3; ++j) side_b[i][j] = sa * to_int(k_.orient2d(*a_[i], *a_[next(i)], *b_[j], plane));
       if (side_b[i][0] < 0 && side_b[i][1] < 0 && side_b[i][2] < 0) return;  // separating line
     }
     for (int j = 0; j < 3; ++j) {
-      for (int i = 0; i < 3; ++i)
-        side_a[j][i] = sb * to_int(k_.orient2d(*b_[j], *b_[next(j)], *a_[i], plane));
+      for (int i = 0; i < 3; ++i) side_a[j][i] = sb * to_int(k_.orient2d(*b_[j], *b_[next(j)], *a_[i], plane));
       if (side_a[j][0] < 0 && side_a[j][1] < 0 && side_a[j][2] < 0) return;
     }
 
@@ -317,9 +342,8 @@ class Classifier {
 // Classifies the intersection of triangles A = (a0, a1, a2) and B = (b0, b1, b2) with
 // the predicates of kernel instance k. See the top of this file.
 template <Kernel K>
-Result classify(const K& k, const typename K::Point& a0, const typename K::Point& a1,
-                const typename K::Point& a2, const typename K::Point& b0,
-                const typename K::Point& b1, const typename K::Point& b2) {
+Result classify(const K& k, const typename K::Point& a0, const typename K::Point& a1, const typename K::Point& a2,
+                const typename K::Point& b0, const typename K::Point& b1, const typename K::Point& b2) {
   using P = typename K::Point;
   const P* const a[3] = {&a0, &a1, &a2};
   const P* const b[3] = {&b0, &b1, &b2};

@@ -43,9 +43,7 @@ class CountingKernel {
     ++counts_->equal;
     return inner_.equal(a, b);
   }
-  bool less(const Point& a, const Point& b) const
-    requires OrderedKernel<K>
-  {
+  bool less(const Point& a, const Point& b) const requires OrderedKernel<K> {
     ++counts_->less;
     return inner_.less(a, b);
   }

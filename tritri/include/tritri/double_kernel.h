@@ -22,9 +22,7 @@ struct DoubleKernel {
   static Sign orient2d(const Point& a, const Point& b, const Point& c, Plane plane) {
     return tritri::orient2d(a, b, c, plane);
   }
-  static bool equal(const Point& a, const Point& b) noexcept {
-    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
-  }
+  static bool equal(const Point& a, const Point& b) noexcept { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
   static bool less(const Point& a, const Point& b) noexcept { return a < b; }
 };
 

@@ -74,13 +74,13 @@ class ImplicitPoint {
   template <class A>
   static std::optional<ImplicitPoint> try_tpi(const A& a0, const A& a1, const A& a2, const A& b0, const A& b1,
                                               const A& b2, const A& c0, const A& c1, const A& c2) {
-    return make({coords(a0), coords(a1), coords(a2), coords(b0), coords(b1), coords(b2), coords(c0),
-                 coords(c1), coords(c2)},
-                Kind::TPI);
+    return make(
+        {coords(a0), coords(a1), coords(a2), coords(b0), coords(b1), coords(b2), coords(c0), coords(c1), coords(c2)},
+        Kind::TPI);
   }
   template <class A>
-  static ImplicitPoint tpi(const A& a0, const A& a1, const A& a2, const A& b0, const A& b1, const A& b2,
-                           const A& c0, const A& c1, const A& c2) {
+  static ImplicitPoint tpi(const A& a0, const A& a1, const A& a2, const A& b0, const A& b1, const A& b2, const A& c0,
+                           const A& c1, const A& c2) {
     auto pt = try_tpi(a0, a1, a2, b0, b1, b2, c0, c1, c2);
     if (!pt)
       throw std::domain_error(

@@ -152,8 +152,7 @@ std::array<T, 4> row4(const Homogeneous<T>& h) {
 
 // det of the 4x4 matrix with rows r0..r3, by Laplace expansion on complementary 2x2 minors.
 template <class T>
-T det4(const std::array<T, 4>& r0, const std::array<T, 4>& r1, const std::array<T, 4>& r2,
-       const std::array<T, 4>& r3) {
+T det4(const std::array<T, 4>& r0, const std::array<T, 4>& r1, const std::array<T, 4>& r2, const std::array<T, 4>& r3) {
   const T s0 = r0[0] * r1[1] - r1[0] * r0[1], s1 = r0[0] * r1[2] - r1[0] * r0[2];
   const T s2 = r0[0] * r1[3] - r1[0] * r0[3], s3 = r0[1] * r1[2] - r1[1] * r0[2];
   const T s4 = r0[1] * r1[3] - r1[1] * r0[3], s5 = r0[2] * r1[3] - r1[2] * r0[3];
@@ -193,34 +192,38 @@ inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, in
   auto offset_stage = [&] {
     if (!with_offset) return 0;
     const auto& o = q.is_explicit() ? q.approx() : offset_origin({&p});
-    return offset_filter_sign([&](auto tag) {
-      using T = decltype(tag);
-      const auto hp = p.offset_homogeneous<T>(o);
-      const auto hq = q.offset_homogeneous<T>(o);
-      const T* pc[3] = {&hp.x, &hp.y, &hp.z};
-      const T* qc[3] = {&hq.x, &hq.y, &hq.z};
-      return *pc[k] * hq.w - *qc[k] * hp.w;
-    }, shape_of({&p, &q}));
+    return offset_filter_sign(
+        [&](auto tag) {
+          using T = decltype(tag);
+          const auto hp = p.offset_homogeneous<T>(o);
+          const auto hq = q.offset_homogeneous<T>(o);
+          const T* pc[3] = {&hp.x, &hp.y, &hp.z};
+          const T* qc[3] = {&hq.x, &hq.y, &hq.z};
+          return *pc[k] * hq.w - *qc[k] * hp.w;
+        },
+        shape_of({&p, &q}));
   };
-  const int s = staged_sign([&](auto tag, const auto& get) {
-    using T = decltype(tag);
-    (void)tag;
-    if (q.is_explicit()) {
-      const auto& h = get(p);
-      const T* hc[3] = {&h.x, &h.y, &h.z};
-      return *hc[k] - T(q.approx()[k]) * h.w;
-    }
-    if (p.is_explicit()) {
-      const auto& h = get(q);
-      const T* hc[3] = {&h.x, &h.y, &h.z};
-      return T(p.approx()[k]) * h.w - *hc[k];
-    }
-    const auto& hp = get(p);
-    const auto& hq = get(q);
-    const T* pc[3] = {&hp.x, &hp.y, &hp.z};
-    const T* qc[3] = {&hq.x, &hq.y, &hq.z};
-    return *pc[k] * hq.w - *qc[k] * hp.w;
-  }, shape_of({&p, &q}), offset_stage);
+  const int s = staged_sign(
+      [&](auto tag, const auto& get) {
+        using T = decltype(tag);
+        (void)tag;
+        if (q.is_explicit()) {
+          const auto& h = get(p);
+          const T* hc[3] = {&h.x, &h.y, &h.z};
+          return *hc[k] - T(q.approx()[k]) * h.w;
+        }
+        if (p.is_explicit()) {
+          const auto& h = get(q);
+          const T* hc[3] = {&h.x, &h.y, &h.z};
+          return T(p.approx()[k]) * h.w - *hc[k];
+        }
+        const auto& hp = get(p);
+        const auto& hq = get(q);
+        const T* pc[3] = {&hp.x, &hp.y, &hp.z};
+        const T* qc[3] = {&hq.x, &hq.y, &hq.z};
+        return *pc[k] * hq.w - *qc[k] * hp.w;
+      },
+      shape_of({&p, &q}), offset_stage);
   return s * p.w_sign() * q.w_sign();
 }
 
@@ -228,8 +231,7 @@ inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, in
 
 // Sign of det[b-a; c-a; d-a] (Positive: d on the side of plane abc that (b-a) x (c-a)
 // points to). Exact.
-inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c,
-                     const ImplicitPoint& d) {
+inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c, const ImplicitPoint& d) {
   if (a.is_explicit() && b.is_explicit() && c.is_explicit() && d.is_explicit())
     return orient3d(a.approx(), b.approx(), c.approx(), d.approx());
   const ImplicitPoint* pts[4] = {&a, &b, &c, &d};
@@ -238,15 +240,17 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
   // Offset filter stage, as the sign of det4 of the rows (W (p - o), W).
   auto offset_det4 = [&] {
     const auto& o = detail::offset_origin({&a, &b, &c, &d});
-    return detail::offset_filter_sign([&](auto tag) {
-      using T = decltype(tag);
-      std::array<T, 4> rows[4];
-      for (int i = 0; i < 4; ++i) {
-        const auto h = pts[i]->offset_homogeneous<T>(o);
-        rows[i] = {h.x, h.y, h.z, h.w};
-      }
-      return detail::det4<T>(rows[0], rows[1], rows[2], rows[3]);
-    }, detail::shape_of({&a, &b, &c, &d}));
+    return detail::offset_filter_sign(
+        [&](auto tag) {
+          using T = decltype(tag);
+          std::array<T, 4> rows[4];
+          for (int i = 0; i < 4; ++i) {
+            const auto h = pts[i]->offset_homogeneous<T>(o);
+            rows[i] = {h.x, h.y, h.z, h.w};
+          }
+          return detail::det4<T>(rows[0], rows[1], rows[2], rows[3]);
+        },
+        detail::shape_of({&a, &b, &c, &d}));
   };
   if (e >= 0) {
     // orient3d = (-1)^e det3(rows W_i (p_i - p_e), i != e, in order) * prod sign(W_i).
@@ -255,19 +259,23 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
     const ImplicitPoint& p0 = *pts[e == 0 ? 1 : 0];
     const ImplicitPoint& p1 = *pts[e <= 1 ? 2 : 1];
     const ImplicitPoint& p2 = *pts[e <= 2 ? 3 : 2];
-    const int s = detail::staged_sign([&](auto tag, const auto& get) {
-      using T = decltype(tag);
-      return detail::det3(detail::scaled_difference3<T>(p0, ref, get), detail::scaled_difference3<T>(p1, ref, get),
-                          detail::scaled_difference3<T>(p2, ref, get));
-    }, detail::shape_of({&a, &b, &c, &d}), [&] { return e % 2 ? offset_det4() : -offset_det4(); });
+    const int s = detail::staged_sign(
+        [&](auto tag, const auto& get) {
+          using T = decltype(tag);
+          return detail::det3(detail::scaled_difference3<T>(p0, ref, get), detail::scaled_difference3<T>(p1, ref, get),
+                              detail::scaled_difference3<T>(p2, ref, get));
+        },
+        detail::shape_of({&a, &b, &c, &d}), [&] { return e % 2 ? offset_det4() : -offset_det4(); });
     return detail::to_sign((e % 2 ? -s : s) * w);
   }
-  const int s = detail::staged_sign([&](auto tag, const auto& get) {
-    using T = decltype(tag);
-    (void)tag;
-    return detail::det4<T>(detail::row4<T>(get(a)), detail::row4<T>(get(b)), detail::row4<T>(get(c)),
-                           detail::row4<T>(get(d)));
-  }, detail::shape_of({&a, &b, &c, &d}), offset_det4);
+  const int s = detail::staged_sign(
+      [&](auto tag, const auto& get) {
+        using T = decltype(tag);
+        (void)tag;
+        return detail::det4<T>(detail::row4<T>(get(a)), detail::row4<T>(get(b)), detail::row4<T>(get(c)),
+                               detail::row4<T>(get(d)));
+      },
+      detail::shape_of({&a, &b, &c, &d}), offset_det4);
   return detail::to_sign(-s * w);
 }
 
@@ -275,8 +283,7 @@ namespace detail {
 // orient2d on implicit points; with_offset = false skips the offset filter stage.
 inline Sign orient2d_staged(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c, Plane plane,
                             bool with_offset) {
-  if (a.is_explicit() && b.is_explicit() && c.is_explicit())
-    return orient2d(a.approx(), b.approx(), c.approx(), plane);
+  if (a.is_explicit() && b.is_explicit() && c.is_explicit()) return orient2d(a.approx(), b.approx(), c.approx(), plane);
   const auto axes = detail::plane_axes(plane);
   const ImplicitPoint* pts[3] = {&a, &b, &c};
   const int e = detail::first_explicit({&a, &b, &c});
@@ -285,39 +292,45 @@ inline Sign orient2d_staged(const ImplicitPoint& a, const ImplicitPoint& b, cons
   auto offset_det3 = [&] {
     if (!with_offset) return 0;
     const auto& o = detail::offset_origin({&a, &b, &c});
-    return detail::offset_filter_sign([&](auto tag) {
-      using T = decltype(tag);
-      std::array<T, 3> rows[3];
-      for (int i = 0; i < 3; ++i) {
-        const auto h = pts[i]->offset_homogeneous<T>(o);
-        const T* hc[3] = {&h.x, &h.y, &h.z};
-        rows[i] = {*hc[axes[0]], *hc[axes[1]], h.w};
-      }
-      return detail::det3(rows[0], rows[1], rows[2]);
-    }, detail::shape_of({&a, &b, &c}));
+    return detail::offset_filter_sign(
+        [&](auto tag) {
+          using T = decltype(tag);
+          std::array<T, 3> rows[3];
+          for (int i = 0; i < 3; ++i) {
+            const auto h = pts[i]->offset_homogeneous<T>(o);
+            const T* hc[3] = {&h.x, &h.y, &h.z};
+            rows[i] = {*hc[axes[0]], *hc[axes[1]], h.w};
+          }
+          return detail::det3(rows[0], rows[1], rows[2]);
+        },
+        detail::shape_of({&a, &b, &c}));
   };
   if (e >= 0) {
     const auto& ref = pts[e]->approx();
-    const int s = detail::staged_sign([&](auto tag, const auto& get) {
-      using T = decltype(tag);
-      std::array<T, 2> rows[2];
-      int n = 0;
-      for (int i = 0; i < 3; ++i)
-        if (i != e) rows[n++] = detail::scaled_difference<T>(*pts[i], ref, axes, get);
-      return rows[0][0] * rows[1][1] - rows[0][1] * rows[1][0];
-    }, detail::shape_of({&a, &b, &c}), [&] { return e % 2 ? -offset_det3() : offset_det3(); });
+    const int s = detail::staged_sign(
+        [&](auto tag, const auto& get) {
+          using T = decltype(tag);
+          std::array<T, 2> rows[2];
+          int n = 0;
+          for (int i = 0; i < 3; ++i)
+            if (i != e) rows[n++] = detail::scaled_difference<T>(*pts[i], ref, axes, get);
+          return rows[0][0] * rows[1][1] - rows[0][1] * rows[1][0];
+        },
+        detail::shape_of({&a, &b, &c}), [&] { return e % 2 ? -offset_det3() : offset_det3(); });
     return detail::to_sign((e % 2 ? -s : s) * w);
   }
-  const int s = detail::staged_sign([&](auto tag, const auto& get) {
-    using T = decltype(tag);
-    std::array<T, 3> rows[3];
-    for (int i = 0; i < 3; ++i) {
-      const auto& h = get(*pts[i]);
-      const T* hc[3] = {&h.x, &h.y, &h.z};
-      rows[i] = {*hc[axes[0]], *hc[axes[1]], h.w};
-    }
-    return detail::det3(rows[0], rows[1], rows[2]);
-  }, detail::shape_of({&a, &b, &c}), offset_det3);
+  const int s = detail::staged_sign(
+      [&](auto tag, const auto& get) {
+        using T = decltype(tag);
+        std::array<T, 3> rows[3];
+        for (int i = 0; i < 3; ++i) {
+          const auto& h = get(*pts[i]);
+          const T* hc[3] = {&h.x, &h.y, &h.z};
+          rows[i] = {*hc[axes[0]], *hc[axes[1]], h.w};
+        }
+        return detail::det3(rows[0], rows[1], rows[2]);
+      },
+      detail::shape_of({&a, &b, &c}), offset_det3);
   return detail::to_sign(s * w);
 }
 }  // namespace detail

@@ -29,10 +29,10 @@ namespace tritri {
 template <class K>
 concept Kernel = std::copy_constructible<typename K::Point> &&
     requires(const K& k, const typename K::Point& p, Plane plane) {
-      { k.orient3d(p, p, p, p) } -> std::same_as<Sign>;
-      { k.orient2d(p, p, p, plane) } -> std::same_as<Sign>;
-      { k.equal(p, p) } -> std::convertible_to<bool>;
-    };
+  { k.orient3d(p, p, p, p) } -> std::same_as<Sign>;
+  { k.orient2d(p, p, p, plane) } -> std::same_as<Sign>;
+  { k.equal(p, p) } -> std::convertible_to<bool>;
+};
 
 template <class K>
 concept OrderedKernel = Kernel<K> && requires(const K& k, const typename K::Point& p) {

@@ -68,13 +68,22 @@ class StaticVector {
   std::size_t size() const noexcept { return size_; }
   static constexpr std::size_t capacity() noexcept { return N; }
   bool empty() const noexcept { return size_ == 0; }
-  const T& operator[](std::size_t i) const noexcept { assert(i < size_); return data_[i]; }
-  T& operator[](std::size_t i) noexcept { assert(i < size_); return data_[i]; }
+  const T& operator[](std::size_t i) const noexcept {
+    assert(i < size_);
+    return data_[i];
+  }
+  T& operator[](std::size_t i) noexcept {
+    assert(i < size_);
+    return data_[i];
+  }
   const T* begin() const noexcept { return data_.data(); }
   const T* end() const noexcept { return data_.data() + size_; }
   T* begin() noexcept { return data_.data(); }
   T* end() noexcept { return data_.data() + size_; }
-  void push_back(const T& v) noexcept { assert(size_ < N); data_[size_++] = v; }
+  void push_back(const T& v) noexcept {
+    assert(size_ < N);
+    data_[size_++] = v;
+  }
   void clear() noexcept { size_ = 0; }
 
   friend bool operator==(const StaticVector& a, const StaticVector& b) noexcept {
@@ -107,8 +116,8 @@ struct Result {
 inline std::ostream& operator<<(std::ostream& os, const Result& r) {
   os << "{points:[";
   for (std::size_t i = 0; i < r.points.size(); ++i)
-    os << (i ? "," : "") << to_string(r.points[i].type) << "(" << int(r.points[i].id0) << ","
-       << int(r.points[i].id1) << ")";
+    os << (i ? "," : "") << to_string(r.points[i].type) << "(" << int(r.points[i].id0) << "," << int(r.points[i].id1)
+       << ")";
   os << "] segments:[";
   for (std::size_t i = 0; i < r.segments.size(); ++i)
     os << (i ? "," : "") << "(" << int(r.segments[i].p0) << "," << int(r.segments[i].p1) << ")";

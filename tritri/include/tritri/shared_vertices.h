@@ -47,7 +47,7 @@ bool meet_only_in_shared(const K& k, const std::array<typename K::Point, 3>& a, 
     return t1 != Sign::Zero && k.orient3d(u, b1, b2, a2) == t1;
   }
   if (shared == 2) {
-    const int w = in_b[0] < 0 ? 0 : (in_b[1] < 0 ? 1 : 2);   // a's corner not in b
+    const int w = in_b[0] < 0 ? 0 : (in_b[1] < 0 ? 1 : 2);    // a's corner not in b
     const int x = 3 - in_b[(w + 1) % 3] - in_b[(w + 2) % 3];  // b's corner not in a
     return k.orient3d(a[0], a[1], a[2], b[x]) != Sign::Zero;
   }

@@ -104,8 +104,7 @@ Expansion<2 * N> scale(const Expansion<N>& e, double b) noexcept {
 // fast_expansion_sum_zeroelim; exact for strongly nonoverlapping inputs under
 // round-to-nearest-even, which every routine here produces). Returns out's length.
 // out may not alias e or f.
-inline std::size_t merge_sum(const double* e, std::size_t en, const double* f, std::size_t fn,
-                             double* out) noexcept {
+inline std::size_t merge_sum(const double* e, std::size_t en, const double* f, std::size_t fn, double* out) noexcept {
   if (en == 0 || fn == 0) {
     const double* src = en ? e : f;
     const std::size_t n = en ? en : fn;
@@ -176,8 +175,7 @@ Expansion<2 * N * M> product(const Expansion<N>& e, const Expansion<M>& f) noexc
 // The exact sign of det[u; v] for 2-vectors given as exact difference expansions of at
 // most N components each (N = 1 when the differences were exact in double).
 template <std::size_t N>
-int det2_sign(const Expansion<N>& ux, const Expansion<N>& uy, const Expansion<N>& vx,
-              const Expansion<N>& vy) noexcept {
+int det2_sign(const Expansion<N>& ux, const Expansion<N>& uy, const Expansion<N>& vx, const Expansion<N>& vy) noexcept {
   return sum(product(ux, vy), negate(product(uy, vx))).sign();
 }
 

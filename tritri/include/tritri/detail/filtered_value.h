@@ -21,7 +21,7 @@ struct FilteredValue {
   double v;     // value computed in double
   double perm;  // bound on the sum of |monomials| (plus underflow floors)
 
-  FilteredValue() = default;  // uninitialised, like a double
+  FilteredValue() = default;                               // uninitialised, like a double
   FilteredValue(double x) : v(x), perm(x < 0 ? -x : x) {}  // exact leaf
   FilteredValue(double v_, double p_) : v(v_), perm(p_) {}
 

@@ -40,8 +40,7 @@ T dot(const std::array<T, 3>& a, const std::array<T, 3>& b) {
 }
 
 template <class T>
-Homogeneous<T> lpi_homogeneous(const Coords& p, const Coords& q, const Coords& r, const Coords& s,
-                               const Coords& t) {
+Homogeneous<T> lpi_homogeneous(const Coords& p, const Coords& q, const Coords& r, const Coords& s, const Coords& t) {
   const auto n = cross(difference<T>(s, r), difference<T>(t, r));
   const auto pq = difference<T>(q, p);
   const T w = dot(n, pq);

@@ -38,7 +38,7 @@ bool to_integers(const double (&d)[N], int max_bits, std::int64_t (&m)[N]) noexc
   std::uint64_t bits;
   std::memcpy(&bits, &largest, sizeof bits);
   const int top = static_cast<int>((bits >> 52) & 0x7ff) - 1023;  // largest < 2^(top+1)
-  const double scale = power_of_two(max_bits - 1 - top);            // exact scaling
+  const double scale = power_of_two(max_bits - 1 - top);          // exact scaling
   for (int i = 0; i < N; ++i) {
     const double x = d[i] * scale;
     m[i] = static_cast<std::int64_t>(x);  // |x| < 2^max_bits <= 2^62: no overflow

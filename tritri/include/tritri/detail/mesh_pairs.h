@@ -46,8 +46,8 @@ std::vector<MeshPoint> checked_vertices(const Eigen::MatrixBase<DerivedV>& V, co
     for (Eigen::Index c = 0; c < 3; ++c) {
       const double x = static_cast<double>(V(r, c));
       if (!std::isfinite(x))
-        throw std::invalid_argument(where + "(" + std::to_string(r) + ", " + std::to_string(c) + ") = " +
-                                    std::to_string(x) + " is not a finite coordinate");
+        throw std::invalid_argument(where + "(" + std::to_string(r) + ", " + std::to_string(c) +
+                                    ") = " + std::to_string(x) + " is not a finite coordinate");
       points[r][c] = x;
     }
   return points;
@@ -60,10 +60,8 @@ std::vector<MeshTriangle> checked_triangles(const Eigen::MatrixBase<DerivedF>& F
   static_assert(std::is_integral_v<typename DerivedF::Scalar>, "F must hold integer vertex indices");
   if (F.size() == 0) return {};
   if (F.cols() != 3)
-    throw std::invalid_argument(where + " must have 3 columns (one triangle per row), got " +
-                                std::to_string(F.cols()));
-  if (F.rows() > INT_MAX)
-    throw std::invalid_argument(where + " has more than " + std::to_string(INT_MAX) + " rows");
+    throw std::invalid_argument(where + " must have 3 columns (one triangle per row), got " + std::to_string(F.cols()));
+  if (F.rows() > INT_MAX) throw std::invalid_argument(where + " has more than " + std::to_string(INT_MAX) + " rows");
   std::vector<MeshTriangle> triangles(static_cast<std::size_t>(F.rows()));
   for (Eigen::Index r = 0; r < F.rows(); ++r)
     for (Eigen::Index c = 0; c < 3; ++c) {
@@ -71,8 +69,8 @@ std::vector<MeshTriangle> checked_triangles(const Eigen::MatrixBase<DerivedF>& F
       bool negative = false;
       if constexpr (std::is_signed_v<typename DerivedF::Scalar>) negative = v < 0;
       if (negative || static_cast<unsigned long long>(v) >= vertex_count)
-        throw std::invalid_argument(where + "(" + std::to_string(r) + ", " + std::to_string(c) + ") = " +
-                                    std::to_string(v) + " is out of range (the vertex list has " +
+        throw std::invalid_argument(where + "(" + std::to_string(r) + ", " + std::to_string(c) +
+                                    ") = " + std::to_string(v) + " is out of range (the vertex list has " +
                                     std::to_string(vertex_count) + " rows)");
       triangles[r][c] = static_cast<int>(v);
     }
