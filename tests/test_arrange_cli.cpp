@@ -102,29 +102,8 @@ std::string shown(const std::vector<std::string>& args) {
   return s;
 }
 
-// Values no integer option takes: empty, signs, spaces, prefixes, suffixes, fractions,
-// NaN, numbers beyond every range (2^31 - 1, 2^63, 2^64, 10^30), an option.
-const std::vector<std::string> kBadIntegers = {"",
-                                               "-1",
-                                               "-0",
-                                               "+5",
-                                               " 5",
-                                               "5 ",
-                                               "5x",
-                                               "0x10",
-                                               "1e3",
-                                               "1.5",
-                                               "nan",
-                                               "NaN",
-                                               "inf",
-                                               "two",
-                                               "2147483647",
-                                               "2147483648",
-                                               "9223372036854775807",
-                                               "9223372036854775808",
-                                               "18446744073709551616",
-                                               "1000000000000000000000000000000",
-                                               "--stats"};
+// Values no integer option takes (support/run_program.h), and an option in place of one.
+const std::vector<std::string> kBadIntegers = tritri_test::bad_integer_values("--stats");
 
 // A two-triangle model (B pierces A) in `dir`.
 std::string two_triangles(const fs::path& dir) {

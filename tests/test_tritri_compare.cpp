@@ -282,29 +282,7 @@ void expect_usage_error(const std::vector<std::string>& args, const fs::path& di
 
 TEST_F(TritriCompare, EveryHostileOptionValueIsAUsageError) {
   const std::string good = write("good.off", box({0, 0, 0}, {1, 1, 1}));
-  // Values no integer option takes: empty, signs, spaces, prefixes, suffixes, fractions,
-  // NaN, numbers beyond every range (2^31 - 1, 2^63, 2^64, 10^30), an option.
-  const std::vector<std::string> bad_integers = {"",
-                                                 "-1",
-                                                 "-0",
-                                                 "+5",
-                                                 " 5",
-                                                 "5 ",
-                                                 "5x",
-                                                 "0x10",
-                                                 "1e3",
-                                                 "1.5",
-                                                 "nan",
-                                                 "NaN",
-                                                 "inf",
-                                                 "two",
-                                                 "2147483647",
-                                                 "2147483648",
-                                                 "9223372036854775807",
-                                                 "9223372036854775808",
-                                                 "18446744073709551616",
-                                                 "1000000000000000000000000000000",
-                                                 "--json"};
+  const std::vector<std::string> bad_integers = tritri_test::bad_integer_values("--json");
   std::vector<std::vector<std::string>> cases;
   for (const char* opt : {"--threads", "--repeat", "--max-differences"}) {
     for (const std::string& v : bad_integers) cases.push_back({good, "--json", opt, v});

@@ -84,4 +84,31 @@ inline Exit spawn(const std::string& program, const std::vector<std::string>& ar
   return e;
 }
 
+// Values no integer option of the tools takes: empty, signs, spaces, prefixes, suffixes,
+// fractions, NaN, numbers beyond every range (2^31 - 1, 2^63, 2^64, 10^30); then `option`
+// (an option where a value belongs).
+inline std::vector<std::string> bad_integer_values(const std::string& option) {
+  return {"",
+          "-1",
+          "-0",
+          "+5",
+          " 5",
+          "5 ",
+          "5x",
+          "0x10",
+          "1e3",
+          "1.5",
+          "nan",
+          "NaN",
+          "inf",
+          "two",
+          "2147483647",
+          "2147483648",
+          "9223372036854775807",
+          "9223372036854775808",
+          "18446744073709551616",
+          "1000000000000000000000000000000",
+          option};
+}
+
 }  // namespace tritri_test
