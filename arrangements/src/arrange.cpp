@@ -46,10 +46,12 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
   s.removed_duplicate = pre.removed_duplicate;
   s.t_preprocess_s = seconds_since(t0);
 
-  // Stage 2: candidate pairs (overlapping bounding boxes).
+  // Stage 2: the pairs to classify (overlapping bounding boxes, exact early-outs).
   t0 = std::chrono::steady_clock::now();
-  const auto pairs = candidate_pairs(soup.vertices, soup.triangles, workers, soup.polygon);
-  s.candidate_pairs = pairs.size();
+  const DetectedPairs detected = detect_pairs(soup.vertices, soup.triangles, workers, soup.polygon);
+  const auto& pairs = detected.pairs;
+  s.candidate_pairs = detected.box_pairs;
+  s.classified_pairs = pairs.size();
   s.t_detect_s = seconds_since(t0);
 
   // Stages 3 and 4 (timed together as "classify"): classify every candidate pair, then
@@ -57,7 +59,7 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
   t0 = std::chrono::steady_clock::now();
   tritri::PredicateCounts counts;
   const auto records = classify_pairs(soup.vertices, soup.triangles, pairs, options.classifier,
-                                      options.count_predicates ? &counts : nullptr);
+                                      options.count_predicates ? &counts : nullptr, detected.planes);
   s.orient3d_calls = counts.orient3d;
   s.orient2d_calls = counts.orient2d;
   IntersectionGraph graph = build_intersection_graph(soup.vertices, soup.triangles, records);

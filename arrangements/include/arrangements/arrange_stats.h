@@ -37,7 +37,7 @@ namespace arrangements {
 struct ArrangeStats {
   std::size_t in_vertices = 0, in_triangles = 0;
   std::size_t merged_vertices = 0, removed_degenerate = 0, removed_duplicate = 0;
-  std::size_t candidate_pairs = 0, intersecting_pairs = 0, coplanar_pairs = 0;
+  std::size_t candidate_pairs = 0, classified_pairs = 0, intersecting_pairs = 0, coplanar_pairs = 0;
   std::size_t intersection_points = 0;  // distinct new points of classification (LPIs)
   std::size_t segments = 0, tri_segments = 0;
   std::size_t tpi = 0;
@@ -77,6 +77,8 @@ inline constexpr auto kArrangeStats = std::make_tuple(
     stat_entry("removed_duplicate", &ArrangeStats::removed_duplicate, 0,
                "duplicate triangles removed (the same three positions)"),
     stat_entry("candidate_pairs", &ArrangeStats::candidate_pairs, 0, "triangle pairs with overlapping boxes"),
+    stat_entry("classified_pairs", &ArrangeStats::classified_pairs, 0,
+               "candidate pairs left to classify (not settled by a plane or as neighbours)"),
     stat_entry("intersecting_pairs", &ArrangeStats::intersecting_pairs, 0,
                "pairs that meet beyond what they share in the mesh"),
     stat_entry("intersection_points", &ArrangeStats::intersection_points, 0, "distinct new points of classification"),
@@ -97,7 +99,8 @@ inline constexpr auto kArrangeStats = std::make_tuple(
     stat_entry("threads", &ArrangeStats::threads, 0, "worker threads"),
     stat_entry("t_load_s", &ArrangeStats::t_load_s, 6, "seconds reading the input files"),
     stat_entry("t_preprocess_s", &ArrangeStats::t_preprocess_s, 6, "seconds of preprocessing"),
-    stat_entry("t_detect_s", &ArrangeStats::t_detect_s, 6, "seconds finding the candidate pairs"),
+    stat_entry("t_detect_s", &ArrangeStats::t_detect_s, 6,
+               "seconds finding the pairs to classify (box search and exact early-outs)"),
     stat_entry("t_classify_s", &ArrangeStats::t_classify_s, 6,
                "seconds classifying pairs, building the intersection graph"),
     stat_entry("t_triangulate_s", &ArrangeStats::t_triangulate_s, 6, "seconds triangulating"),

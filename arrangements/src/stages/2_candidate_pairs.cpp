@@ -1,20 +1,113 @@
-// Stage 2: bounding-box candidate pairs (see 2_candidate_pairs.h): the same search as
-// tritri's batch API (tritri/box_pairs.h), with the pipeline's thread cap.
+// Stage 2: box pairs filtered by exact early-outs as they are found (see 2_candidate_pairs.h).
 #include "stages/2_candidate_pairs.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+#include <tbb/task_arena.h>
 
 #include <stdexcept>
 #include <string>
 
 #include <tritri/box_pairs.h>
+#include <tritri/double_kernel.h>
+#include <tritri/plane_filter.h>
+#include <tritri/shared_vertices.h>
 
 #include "arrangements/thread_count.h"
 
 namespace arrangements {
+namespace {
+
+void check_threads(int threads) {
+  if (threads > kMaxThreads)
+    throw std::invalid_argument("candidate_pairs: threads must be at most " + std::to_string(kMaxThreads));
+}
+
+int shared_vertices(const Tri& a, const Tri& b) {
+  int n = 0;
+  for (int x : a) n += (x == b[0]) + (x == b[1]) + (x == b[2]);
+  return n;
+}
+
+}  // namespace
+
+DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F, int threads,
+                           std::span<const std::int64_t> polygon) {
+  check_threads(threads);
+  DetectedPairs out;
+  std::vector<tritri::PlaneFilter>& planes = out.planes;
+  planes.resize(F.size());
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t{0}, F.size(),
+                      [&](std::size_t t) { planes[t] = tritri::plane_filter(V[F[t][0]], V[F[t][1]], V[F[t][2]]); });
+  });
+
+  struct Found {
+    std::vector<std::pair<int, int>> pairs;
+    std::size_t box_pairs = 0;
+  };
+  tbb::enumerable_thread_specific<Found> found;
+  tritri::for_each_overlapping_pair(V, F, threads, polygon, [&](int i, int j) {
+    Found& local = found.local();
+    ++local.box_pairs;
+    const Tri& a = F[i];
+    const Tri& b = F[j];
+    // side(t, k): corner k of the other triangle against the plane of triangle t (0: a),
+    // each evaluated at most once.
+    tritri::Sign known[2][3];
+    bool have[2][3] = {};
+    auto side = [&](int t, int corner) {
+      if (!have[t][corner]) {
+        const Tri& p = t == 0 ? a : b;
+        const Tri& o = t == 0 ? b : a;
+        known[t][corner] = tritri::side_of_plane(planes[t == 0 ? i : j], V[p[0]], V[p[1]], V[p[2]], V[o[corner]]);
+        have[t][corner] = true;
+      }
+      return known[t][corner];
+    };
+    // Coplanar: b's free corners (not shared with a) all in plane(a). Usually a known
+    // nonzero sign answers at once.
+    auto coplanar = [&] {
+      for (int c = 0; c < 3; ++c)
+        if (b[c] != a[0] && b[c] != a[1] && b[c] != a[2] && side(0, c) != tritri::Sign::Zero) return false;
+      return true;
+    };
+    const bool shares = shared_vertices(a, b) > 0;
+    bool settled = shares ? tritri::meet_only_in_shared_by_sides(a, b, side) : tritri::separated_by_plane(side);
+    if (!settled && coplanar()) {
+      const tritri::DoubleKernel k;
+      const std::array<Vec3, 3> pa{V[a[0]], V[a[1]], V[a[2]]}, pb{V[b[0]], V[b[1]], V[b[2]]};
+      settled = shares ? tritri::coplanar_meet_only_in_shared(k, pa, a, pb, b) : tritri::coplanar_separated(k, pa, pb);
+    } else if (!settled) {
+      // One triangle touching the other's plane without crossing it.
+      const tritri::DoubleKernel k;
+      const std::array<Vec3, 3> pa{V[a[0]], V[a[1]], V[a[2]]}, pb{V[b[0]], V[b[1]], V[b[2]]};
+      const tritri::Sign sb[3] = {side(0, 0), side(0, 1), side(0, 2)};
+      settled = tritri::touches_only_in_shared(k, pa, a, pb, b, sb);
+      if (!settled) {
+        const tritri::Sign sa[3] = {side(1, 0), side(1, 1), side(1, 2)};
+        settled = tritri::touches_only_in_shared(k, pb, b, pa, a, sa);
+      }
+    }
+    if (!settled) local.pairs.emplace_back(i, j);
+  });
+
+  std::size_t kept = 0;
+  for (const Found& f : found) {
+    out.box_pairs += f.box_pairs;
+    kept += f.pairs.size();
+  }
+  out.pairs.reserve(kept);
+  for (const Found& f : found) out.pairs.insert(out.pairs.end(), f.pairs.begin(), f.pairs.end());
+  arena.execute([&] { tbb::parallel_sort(out.pairs.begin(), out.pairs.end()); });
+  return out;
+}
 
 std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F, int threads,
                                                  std::span<const std::int64_t> polygon) {
-  if (threads > kMaxThreads)
-    throw std::invalid_argument("candidate_pairs: threads must be at most " + std::to_string(kMaxThreads));
+  check_threads(threads);
   return tritri::overlapping_triangle_pairs(V, F, threads, polygon);
 }
 

@@ -1,30 +1,59 @@
 // arrangements/src/stages/2_candidate_pairs.h
 //
-// Stage 2 of the pipeline: the pairs of triangles that may intersect.
+// Stage 2 of the pipeline: the pairs of triangles that may intersect beyond what they
+// share, found and filtered in one pass, without a list of every box-overlapping pair.
 //
-// std::vector<std::pair<int, int>> candidate_pairs(V, F, threads = 0, polygon = {})
-//   V, F     the preprocessed soup's vertices and triangles (stage 1: finite, in range)
+// DetectedPairs detect_pairs(V, F, threads, polygon)
+//   V, F     the preprocessed soup's vertices and triangles (stage 1: finite, in range,
+//            vertices merged, so equal indices are equal points and no triangle is
+//            degenerate)
 //   threads  worker threads; <= 0: all cores; at most kMaxThreads (thread_count.h, else
 //            std::invalid_argument)
 //   polygon  #F or empty: TriangleSoup::polygon (triangles of one polygon face, known to
-//            meet only in shared corners and edges, share an id >= 0)
-// returns every pair (i, j), i < j, of triangles whose closed axis-aligned bounding boxes
-// overlap, sorted, each once; except pairs of one polygon face: a face with n corners
-// would otherwise give up to n^2 / 2 pairs (its triangles may all share a corner), none of
-// which can intersect. Pairs that share mesh vertices are included: they can still
-// intersect away from what they share; stage 3 settles most of them cheaply.
-// This is tritri::overlapping_triangle_pairs (tritri/box_pairs.h: method, exactness,
-// cost), the search the batch API uses too.
+//            meet only in shared corners and edges, share an id >= 0; never paired)
+// returns `planes`: one tritri::PlaneFilter per triangle (stage 3 reuses them); `pairs`: every pair (i, j), i < j,
+// whose closed bounding boxes overlap and that the exact early-outs below do not settle, sorted, each once;
+// `box_pairs`: how many pairs had overlapping boxes (the stat candidate_pairs). Early-outs, as each box pair is found
+// (tritri::for_each_overlapping_pair, in parallel):
+//   - neighbours (a shared vertex or edge by index) that provably meet only in what they
+//     share: tritri::meet_only_in_shared_by_sides, 1 to 4 plane signs;
+//   - other pairs where one triangle lies strictly on one side of the other's plane:
+//     tritri::separated_by_plane, 2 to 6 plane signs, the first test of every classifier;
+//   - coplanar pairs (every free corner of one in the other's plane): neighbours that
+//     meet only in what they share, and disjoint pairs, by orient2d in a projection
+//     (tritri::coplanar_meet_only_in_shared, tritri::coplanar_separated); flat CAD faces
+//     give many of these.
+// Either way the classifiers would report nothing for the pair, so dropping it here
+// changes no result. Plane signs come from one tritri::PlaneFilter per triangle
+// (tritri/plane_filter.h: exact; decisive for slivers) with orient3d as the fallback.
+// Exact: every decision is an exact sign. The result does not depend on `threads`.
+// Cost: the box search (tritri/box_pairs.h) plus O(1) per box pair; memory: 32 bytes per
+// triangle plus the pairs kept (usually a small fraction of the box pairs).
+//
+// candidate_pairs(V, F, threads = 0, polygon = {}): the box pairs alone, as a sorted list
+// (tritri::overlapping_triangle_pairs), for tests and tools that want them.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <utility>
 #include <vector>
 
+#include <tritri/plane_filter.h>
+
 #include "arrangements/triangle_soup.h"
 
 namespace arrangements {
+
+struct DetectedPairs {
+  std::vector<std::pair<int, int>> pairs;   // to classify, sorted
+  std::size_t box_pairs = 0;                // pairs with overlapping boxes
+  std::vector<tritri::PlaneFilter> planes;  // tritri::plane_filter of each triangle, for stage 3
+};
+
+DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F, int threads,
+                           std::span<const std::int64_t> polygon = {});
 
 std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F, int threads = 0,
                                                  std::span<const std::int64_t> polygon = {});

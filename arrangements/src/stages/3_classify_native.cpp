@@ -2,6 +2,7 @@
 
 #include <tritri/counting_kernel.h>
 #include <tritri/double_kernel.h>
+#include <tritri/plane_filter.h>
 #include <tritri/location.h>
 #include <tritri/projection.h>
 
@@ -234,6 +235,8 @@ bool classify_pair_native(const K& k, const std::vector<Vec3>& V, const std::vec
 
 template bool classify_pair_native(const tritri::DoubleKernel&, const std::vector<Vec3>&, const std::vector<Tri>&, int,
                                    int, PairIntersection&);
+template bool classify_pair_native(const tritri::PlaneCachedKernel&, const std::vector<Vec3>&, const std::vector<Tri>&,
+                                   int, int, PairIntersection&);
 template bool classify_pair_native(const tritri::CountingKernel<tritri::DoubleKernel>&, const std::vector<Vec3>&,
                                    const std::vector<Tri>&, int, int, PairIntersection&);
 

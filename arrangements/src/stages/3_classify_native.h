@@ -24,6 +24,7 @@
 
 #include <tritri/counting_kernel.h>
 #include <tritri/double_kernel.h>
+#include <tritri/plane_filter.h>
 
 #include "stages/3_pair_intersection.h"
 #include "arrangements/triangle_soup.h"
@@ -34,6 +35,8 @@ template <class K>
 bool classify_pair_native(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
                           PairIntersection& out);
 extern template bool classify_pair_native(const tritri::DoubleKernel&, const std::vector<Vec3>&,
+                                          const std::vector<Tri>&, int, int, PairIntersection&);
+extern template bool classify_pair_native(const tritri::PlaneCachedKernel&, const std::vector<Vec3>&,
                                           const std::vector<Tri>&, int, int, PairIntersection&);
 extern template bool classify_pair_native(const tritri::CountingKernel<tritri::DoubleKernel>&, const std::vector<Vec3>&,
                                           const std::vector<Tri>&, int, int, PairIntersection&);

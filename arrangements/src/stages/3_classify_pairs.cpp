@@ -1,9 +1,12 @@
 #include "stages/3_classify_pairs.h"
 
+#include <span>
+#include <type_traits>
+
 #include <tritri/counting_kernel.h>
 #include <tritri/detail/ordered_parallel.h>
 #include <tritri/double_kernel.h>
-#include <tritri/shared_vertices.h>
+#include <tritri/plane_filter.h>
 
 #include "stages/3_classify_native.h"
 #include "stages/3_classify_tritri.h"
@@ -12,26 +15,43 @@ namespace arrangements {
 namespace {
 
 // Pairs [begin, end) with the predicates of kernel k, the intersecting ones appended to
-// `found`. Neighbours that meet only in what they share contribute nothing (both
-// classifiers drop such pairs): settled by 1 to 4 orient3d instead of a full
-// classification.
+// `found`. (Neighbours that meet only in what they share, and pairs separated by a plane,
+// usually never get here: stage 2 drops them. The classifiers report nothing for them.)
+template <class K>
+bool classify_one(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+                  Classifier classifier, PairIntersection& record) {
+  switch (classifier) {
+    case Classifier::Native:
+      return classify_pair_native(k, V, F, ta, tb, record);
+    case Classifier::Tritri:
+      return classify_pair_tritri(k, V, F, ta, tb, record);
+  }
+  return false;
+}
+
+// Pairs [begin, end), the intersecting ones appended to `found`: with the predicates of
+// kernel k, or (planes given, no counting) with each pair's two cached planes
+// (tritri::PlaneCachedKernel: the same exact answers, cheaper). (Neighbours that meet
+// only in what they share, and pairs separated by a plane, usually never get here: stage
+// 2 drops them. The classifiers report nothing for them.)
 template <class K>
 void classify_range(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                    const std::vector<std::pair<int, int>>& pairs, std::size_t begin, std::size_t end,
-                    Classifier classifier, std::vector<PairIntersection>& found) {
+                    std::span<const tritri::PlaneFilter> planes, const std::vector<std::pair<int, int>>& pairs,
+                    std::size_t begin, std::size_t end, Classifier classifier, std::vector<PairIntersection>& found) {
   PairIntersection record;
   for (std::size_t i = begin; i < end; ++i) {
-    const Tri& a = F[pairs[i].first];
-    const Tri& b = F[pairs[i].second];
-    if (tritri::meet_only_in_shared(k, {V[a[0]], V[a[1]], V[a[2]]}, a, {V[b[0]], V[b[1]], V[b[2]]}, b)) continue;
-    bool hit = false;
-    switch (classifier) {
-      case Classifier::Native:
-        hit = classify_pair_native(k, V, F, pairs[i].first, pairs[i].second, record);
-        break;
-      case Classifier::Tritri:
-        hit = classify_pair_tritri(k, V, F, pairs[i].first, pairs[i].second, record);
-        break;
+    const auto [ta, tb] = pairs[i];
+    bool hit;
+    if constexpr (std::is_same_v<K, tritri::DoubleKernel>) {
+      if (!planes.empty()) {
+        const Vec3* a[3] = {&V[F[ta][0]], &V[F[ta][1]], &V[F[ta][2]]};
+        const Vec3* b[3] = {&V[F[tb][0]], &V[F[tb][1]], &V[F[tb][2]]};
+        hit = classify_one(tritri::PlaneCachedKernel(a, planes[ta], b, planes[tb]), V, F, ta, tb, classifier, record);
+      } else {
+        hit = classify_one(k, V, F, ta, tb, classifier, record);
+      }
+    } else {
+      hit = classify_one(k, V, F, ta, tb, classifier, record);
     }
     if (hit) found.push_back(record);
   }
@@ -41,7 +61,8 @@ void classify_range(const K& k, const std::vector<Vec3>& V, const std::vector<Tr
 
 std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
                                              const std::vector<std::pair<int, int>>& pairs, Classifier classifier,
-                                             tritri::PredicateCounts* counts) {
+                                             tritri::PredicateCounts* counts,
+                                             std::span<const tritri::PlaneFilter> planes) {
   // Fixed chunks, concatenated in order (the loop tritri's batch API uses too): the
   // output does not depend on scheduling.
   constexpr std::size_t chunk = 2048;
@@ -51,10 +72,10 @@ std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const s
       pairs.size(), chunk,
       [&](std::size_t c, std::size_t begin, std::size_t end, std::vector<PairIntersection>& found) {
         if (counts)
-          classify_range(tritri::CountingKernel<tritri::DoubleKernel>(chunk_counts[c]), V, F, pairs, begin, end,
+          classify_range(tritri::CountingKernel<tritri::DoubleKernel>(chunk_counts[c]), V, F, {}, pairs, begin, end,
                          classifier, found);
         else
-          classify_range(tritri::DoubleKernel{}, V, F, pairs, begin, end, classifier, found);
+          classify_range(tritri::DoubleKernel{}, V, F, planes, pairs, begin, end, classifier, found);
       });
   for (const auto& n : chunk_counts) {
     counts->orient3d += n.orient3d;

@@ -3,6 +3,7 @@
 #include <tritri/classify.h>
 #include <tritri/counting_kernel.h>
 #include <tritri/double_kernel.h>
+#include <tritri/plane_filter.h>
 
 namespace arrangements {
 
@@ -89,6 +90,8 @@ bool classify_pair_tritri(const K& k, const std::vector<Vec3>& V, const std::vec
 
 template bool classify_pair_tritri(const tritri::DoubleKernel&, const std::vector<Vec3>&, const std::vector<Tri>&, int,
                                    int, PairIntersection&);
+template bool classify_pair_tritri(const tritri::PlaneCachedKernel&, const std::vector<Vec3>&, const std::vector<Tri>&,
+                                   int, int, PairIntersection&);
 template bool classify_pair_tritri(const tritri::CountingKernel<tritri::DoubleKernel>&, const std::vector<Vec3>&,
                                    const std::vector<Tri>&, int, int, PairIntersection&);
 

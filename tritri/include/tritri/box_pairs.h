@@ -80,11 +80,11 @@ inline std::vector<Box> triangle_boxes(std::span<const std::array<double, 3>> V,
 // earlier boxes whose x-extent reaches its first xmin (no other earlier box can meet it),
 // so each pair is found by exactly one task. (CGAL's own Parallel_tag splits both ranges
 // into 4 x 4 copies; measured on 2 cores it did twice the work of the sequential call.)
-inline Pairs overlapping_pairs(std::vector<Box>& boxes, int workers) {
-  tbb::enumerable_thread_specific<Pairs> found;  // the callback runs on several threads
-  auto report = [&found](const Box& a, const Box& b) {
+template <class Visit>
+void visit_overlapping_pairs(std::vector<Box>& boxes, int workers, const Visit& visit) {
+  auto report = [&visit](const Box& a, const Box& b) {
     const int i = a.info(), j = b.info();
-    if (i != j) found.local().emplace_back(std::min(i, j), std::max(i, j));
+    if (i != j) visit(std::min(i, j), std::max(i, j));
   };
   const CGAL::Box_intersection_d::Box_traits_d<Box> traits;
   constexpr std::ptrdiff_t cutoff = 10;  // CGAL's default: below it, boxes are compared pairwise
@@ -93,30 +93,34 @@ inline Pairs overlapping_pairs(std::vector<Box>& boxes, int workers) {
   const std::size_t chunks = std::min<std::size_t>(4 * static_cast<std::size_t>(workers), boxes.size() / kMinChunk);
   if (workers <= 1 || chunks <= 1) {
     CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), report, traits, cutoff, closed);
-  } else {
-    tbb::parallel_sort(boxes.begin(), boxes.end(),
-                       [](const Box& a, const Box& b) { return a.min_coord(0) < b.min_coord(0); });
-    auto first_of = [&](std::size_t chunk) { return chunk * boxes.size() / chunks; };
-    // Chunk j reports the pairs whose later box (in x order) lies in it: one complete
-    // self-intersection search over its boxes plus the earlier boxes that reach into it,
-    // keeping pairs with a box of the chunk. (CGAL's bipartite mode loses pairs of closed
-    // boxes that only touch, so it is not used.)
-    tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t j) {
-      const double start = boxes[first_of(j)].min_coord(0);
-      std::vector<Box> local;
-      for (std::size_t i = 0; i < first_of(j); ++i)
-        if (boxes[i].max_coord(0) >= start) local.push_back(boxes[i]);
-      const std::size_t reaching = local.size();
-      std::vector<char> in_chunk(boxes.size(), 0);  // by triangle index
-      local.insert(local.end(), boxes.begin() + first_of(j), boxes.begin() + first_of(j + 1));
-      for (std::size_t i = reaching; i < local.size(); ++i) in_chunk[local[i].info()] = 1;
-      auto report_chunk = [&](const Box& a, const Box& b) {
-        if (in_chunk[a.info()] || in_chunk[b.info()]) report(a, b);
-      };
-      CGAL::box_self_intersection_d<CGAL::Sequential_tag>(local.begin(), local.end(), report_chunk, traits, cutoff,
-                                                          closed);
-    });
+    return;
   }
+  tbb::parallel_sort(boxes.begin(), boxes.end(),
+                     [](const Box& a, const Box& b) { return a.min_coord(0) < b.min_coord(0); });
+  auto first_of = [&](std::size_t chunk) { return chunk * boxes.size() / chunks; };
+  // Chunk j reports the pairs whose later box (in x order) lies in it: one complete
+  // self-intersection search over its boxes plus the earlier boxes that reach into it,
+  // keeping pairs with a box of the chunk. (CGAL's bipartite mode loses pairs of closed
+  // boxes that only touch, so it is not used.)
+  tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t j) {
+    const double start = boxes[first_of(j)].min_coord(0);
+    std::vector<Box> local;
+    for (std::size_t i = 0; i < first_of(j); ++i)
+      if (boxes[i].max_coord(0) >= start) local.push_back(boxes[i]);
+    const std::size_t reaching = local.size();
+    std::vector<char> in_chunk(boxes.size(), 0);  // by triangle index
+    local.insert(local.end(), boxes.begin() + first_of(j), boxes.begin() + first_of(j + 1));
+    for (std::size_t i = reaching; i < local.size(); ++i) in_chunk[local[i].info()] = 1;
+    auto report_chunk = [&](const Box& a, const Box& b) {
+      if (in_chunk[a.info()] || in_chunk[b.info()]) report(a, b);
+    };
+    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(local.begin(), local.end(), report_chunk, traits, cutoff,
+                                                        closed);
+  });
+}
+
+// Sorts the pairs the workers found and drops repeats.
+inline Pairs sorted_unique(tbb::enumerable_thread_specific<Pairs>& found) {
   Pairs all;
   std::size_t n = 0;
   for (const Pairs& p : found) n += p.size();
@@ -125,6 +129,12 @@ inline Pairs overlapping_pairs(std::vector<Box>& boxes, int workers) {
   tbb::parallel_sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
   return all;
+}
+
+inline Pairs overlapping_pairs(std::vector<Box>& boxes, int workers) {
+  tbb::enumerable_thread_specific<Pairs> found;  // the visitor runs on several threads
+  visit_overlapping_pairs(boxes, workers, [&found](int i, int j) { found.local().emplace_back(i, j); });
+  return sorted_unique(found);
 }
 
 namespace bg = boost::geometry;
@@ -144,8 +154,9 @@ inline RBox rbox(const Box& b) {
 // beside the other triangles; a pair of items that involves a group is expanded by
 // querying the group's R-tree of triangle boxes (closed boxes: touching counts, as above)
 // with the other item's triangle boxes.
-inline Pairs overlapping_pairs_with_groups(const std::vector<Box>& boxes, std::span<const std::int64_t> group,
-                                           int workers) {
+template <class Visit>
+void visit_overlapping_pairs_with_groups(const std::vector<Box>& boxes, std::span<const std::int64_t> group,
+                                         int workers, const Visit& visit) {
   std::map<std::int64_t, std::vector<int>> faces_by_id;  // deterministic face order
   std::vector<std::vector<int>> items;                   // triangles of each item
   for (std::size_t t = 0; t < boxes.size(); ++t) {
@@ -171,47 +182,55 @@ inline Pairs overlapping_pairs_with_groups(const std::vector<Box>& boxes, std::s
     trees[i - first_face] = RTree(values.begin(), values.end());  // bulk loading (packing)
   });
   const Pairs item_pairs = overlapping_pairs(item_boxes, workers);
-  tbb::enumerable_thread_specific<Pairs> found;
+  // Each triangle is in one item and item pairs are unique, so each triangle pair is
+  // visited once.
   tbb::parallel_for(std::size_t(0), item_pairs.size(), [&](std::size_t k) {
     int a = item_pairs[k].first, b = item_pairs[k].second;
     if (items[a].size() > items[b].size()) std::swap(a, b);  // query the larger one
-    Pairs& out = found.local();
     if (items[b].size() == 1) {
-      out.emplace_back(std::min(items[a][0], items[b][0]), std::max(items[a][0], items[b][0]));
+      visit(std::min(items[a][0], items[b][0]), std::max(items[a][0], items[b][0]));
       return;
     }
     const RTree& tree = trees[b - first_face];  // b has two triangles or more: a group
     for (int t : items[a])
       for (auto it = tree.qbegin(bgi::intersects(rbox(boxes[t]))); it != tree.qend(); ++it)
-        out.emplace_back(std::min(t, it->second), std::max(t, it->second));
+        visit(std::min(t, it->second), std::max(t, it->second));
   });
-  Pairs all;
-  for (const Pairs& p : found) all.insert(all.end(), p.begin(), p.end());
-  tbb::parallel_sort(all.begin(), all.end());
-  all.erase(std::unique(all.begin(), all.end()), all.end());
-  return all;
 }
 
 }  // namespace detail::box_pairs
+
+// for_each_overlapping_pair(V, F, threads, group, visit): the same search without the
+// list: visit(i, j) (i < j, const, callable from several threads at once) is called once
+// for every pair that overlapping_triangle_pairs would return, in no particular order.
+// For callers that filter or classify pairs as they are found, so that millions of
+// candidate pairs are never stored. Same preconditions, exactness and search cost.
+template <class Visit>
+void for_each_overlapping_pair(std::span<const std::array<double, 3>> V, std::span<const std::array<int, 3>> F,
+                               int threads, std::span<const std::int64_t> group, const Visit& visit) {
+  using namespace detail::box_pairs;
+  if (!group.empty() && group.size() != F.size())
+    throw std::invalid_argument(
+        "tritri::overlapping_triangle_pairs: group must be empty or have one entry per triangle");
+  if (F.size() < 2) return;
+  std::vector<Box> boxes = triangle_boxes(V, F);
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  const bool groups = std::any_of(group.begin(), group.end(), [](std::int64_t id) { return id >= 0; });
+  arena.execute([&] {
+    if (groups)
+      visit_overlapping_pairs_with_groups(boxes, group, arena.max_concurrency(), visit);
+    else
+      visit_overlapping_pairs(boxes, arena.max_concurrency(), visit);
+  });
+}
 
 inline std::vector<std::pair<int, int>> overlapping_triangle_pairs(std::span<const std::array<double, 3>> V,
                                                                    std::span<const std::array<int, 3>> F,
                                                                    int threads = 0,
                                                                    std::span<const std::int64_t> group = {}) {
-  using namespace detail::box_pairs;
-  if (!group.empty() && group.size() != F.size())
-    throw std::invalid_argument(
-        "tritri::overlapping_triangle_pairs: group must be empty or have one entry per triangle");
-  if (F.size() < 2) return {};
-  std::vector<Box> boxes = triangle_boxes(V, F);
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  Pairs pairs;
-  const bool groups = std::any_of(group.begin(), group.end(), [](std::int64_t id) { return id >= 0; });
-  arena.execute([&] {
-    pairs = groups ? overlapping_pairs_with_groups(boxes, group, arena.max_concurrency())
-                   : overlapping_pairs(boxes, arena.max_concurrency());
-  });
-  return pairs;
+  tbb::enumerable_thread_specific<detail::box_pairs::Pairs> found;  // visit runs on several threads
+  for_each_overlapping_pair(V, F, threads, group, [&found](int i, int j) { found.local().emplace_back(i, j); });
+  return detail::box_pairs::sorted_unique(found);
 }
 
 }  // namespace tritri
