@@ -8,6 +8,7 @@
 
 #include <tritri/double_kernel.h>
 #include <tritri/implicit_predicates.h>
+#include <tritri/point_bounds.h>
 #include <tritri/location.h>
 #include <tritri/projection.h>
 
@@ -182,16 +183,20 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
 
   // 2. Exact deduplication among new points: sort by exact lexicographic order; each run
   // of equal points is represented by its smallest key index (deterministic).
+  // Certified x intervals settle most comparisons with two double comparisons.
+  std::vector<tritri::XBounds> xb(keys.size());
+  tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { xb[i] = tritri::x_bounds(lpis[i]); });
+  auto compare = [&](int a, int b) { return tritri::compare_xyz_bounded(lpis[a], xb[a], lpis[b], xb[b]); };
   std::vector<int> order(keys.size());
   std::iota(order.begin(), order.end(), 0);
   tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
-    const int c = tritri::compare_xyz(lpis[a], lpis[b]);
+    const int c = compare(a, b);
     return c != 0 ? c < 0 : a < b;
   });
   std::vector<int> representative(keys.size());
   for (std::size_t i = 0; i < order.size();) {
     std::size_t j = i + 1;
-    while (j < order.size() && tritri::compare_xyz(lpis[order[i]], lpis[order[j]]) == 0) ++j;
+    while (j < order.size() && compare(order[i], order[j]) == 0) ++j;
     int rep = order[i];
     for (std::size_t k = i; k < j; ++k) rep = std::min(rep, order[k]);
     for (std::size_t k = i; k < j; ++k) representative[order[k]] = rep;
@@ -208,9 +213,13 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   std::vector<int> vertex_match(keys.size(), -1);
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
     if (representative[i] != static_cast<int>(i)) return;
+    auto compare_vertex = [&](int vid) {
+      const tritri::XBounds at{V[vid][0], V[vid][0]};
+      return tritri::compare_xyz_bounded(g.points[vid], at, lpis[i], xb[i]);
+    };
     auto it = std::lower_bound(by_position.begin(), by_position.end(), 0,
-                               [&](int vid, int) { return tritri::compare_xyz(g.points[vid], lpis[i]) < 0; });
-    if (it != by_position.end() && tritri::compare_xyz(g.points[*it], lpis[i]) == 0) vertex_match[i] = *it;
+                               [&](int vid, int) { return compare_vertex(vid) < 0; });
+    if (it != by_position.end() && compare_vertex(*it) == 0) vertex_match[i] = *it;
   });
   for (std::size_t i = 0; i < keys.size(); ++i) {
     if (representative[i] != static_cast<int>(i)) continue;
@@ -223,6 +232,9 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
     }
   }
   for (std::size_t i = 0; i < keys.size(); ++i) final_id[i] = final_id[representative[i]];
+  // The new points in the order of the sort (triangulation looks TPIs up in it).
+  for (const int k : order)
+    if (representative[k] == k && vertex_match[k] < 0) g.new_points_sorted.push_back(final_id[k]);
 
   // 4. Record points, segments and coplanar partners per triangle and edge.
   g.edge_points.assign(g.edges.size(), {});

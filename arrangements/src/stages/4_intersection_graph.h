@@ -53,6 +53,7 @@ struct IntersectionGraph {
   std::vector<std::vector<std::array<int, 2>>> triangle_segments;
   std::vector<std::vector<int>> coplanar_partners;
   std::vector<SegmentSupport> segment_supports;  // sorted (by ends first), unique
+  std::vector<int> new_points_sorted;            // ids of the new points in exact lexicographic order
 
   // Statistics.
   std::size_t intersecting_pairs = 0;

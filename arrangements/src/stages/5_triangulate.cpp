@@ -62,19 +62,16 @@ OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& g, int
   // A crossing can also be a point that classification made (e.g. where an edge of one
   // constraint's triangle lies in t's plane and meets the other constraint's triangle):
   // look TPIs up among the graph's points, explicit vertices and LPIs sorted separately.
-  std::vector<int> explicit_sorted, lpi_sorted;
+  std::vector<int> explicit_sorted;
+  const std::vector<int>& lpi_sorted = g.new_points_sorted;  // sorted by stage 4
   if (!tpi.empty()) {
     explicit_sorted.resize(g.num_input_vertices);
     std::iota(explicit_sorted.begin(), explicit_sorted.end(), 0);
     tbb::parallel_sort(explicit_sorted.begin(), explicit_sorted.end(),
                        [&](int a, int b) { return soup.vertices[a] < soup.vertices[b]; });
-    lpi_sorted.resize(g.points.size() - g.num_input_vertices);
-    std::iota(lpi_sorted.begin(), lpi_sorted.end(), g.num_input_vertices);
-    tbb::parallel_sort(lpi_sorted.begin(), lpi_sorted.end(),
-                       [&](int a, int b) { return tritri::compare_xyz(g.points[a], g.points[b]) < 0; });
   }
   auto existing = [&](const ImplicitPoint& x) {
-    for (const std::vector<int>* sorted : {&explicit_sorted, &lpi_sorted}) {
+    for (const std::vector<int>* sorted : {static_cast<const std::vector<int>*>(&explicit_sorted), &lpi_sorted}) {
       auto it = std::lower_bound(sorted->begin(), sorted->end(), 0,
                                  [&](int id, int) { return tritri::compare_xyz(g.points[id], x) < 0; });
       if (it != sorted->end() && tritri::compare_xyz(g.points[*it], x) == 0) return *it;

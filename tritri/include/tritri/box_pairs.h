@@ -19,7 +19,8 @@
 // input validation).
 // Exactness: the boxes are the exact minima and maxima of the corners' coordinates, so no
 // pair that touches is missed.
-// Method: CGAL's box_intersection_d segment tree (closed boxes). In parallel the boxes are
+// Method: a uniform grid where the boxes are of similar size (tritri/detail/box_grid.h);
+// otherwise CGAL's box_intersection_d segment tree (closed boxes). In parallel the boxes are
 // sorted by xmin and cut into chunks, one task per chunk; below ~4000 triangles, or with
 // one thread, one sequential call. Groups are single boxes in that search, expanded
 // through a Boost.Geometry R-tree of their triangles' boxes.
@@ -43,6 +44,8 @@
 #include <stdexcept>
 #include <utility>
 #include <vector>
+
+#include "tritri/detail/box_grid.h"
 // Boost 1.81's R-tree includes a header Boost itself has deprecated: not ours to fix.
 #ifndef BOOST_ALLOW_DEPRECATED_HEADERS
 #define BOOST_ALLOW_DEPRECATED_HEADERS
@@ -89,7 +92,8 @@ void visit_overlapping_pairs(std::vector<Box>& boxes, int workers, const Visit& 
   const CGAL::Box_intersection_d::Box_traits_d<Box> traits;
   constexpr std::ptrdiff_t cutoff = 10;  // CGAL's default: below it, boxes are compared pairwise
   constexpr auto closed = CGAL::Box_intersection_d::CLOSED;
-  constexpr std::size_t kMinChunk = 2048;  // below this, splitting costs more than it saves
+  constexpr std::size_t kMinChunk = 2048;         // below this, splitting costs more than it saves
+  if (visit_pairs_in_grid(boxes, visit)) return;  // a uniform grid when that is cheap
   const std::size_t chunks = std::min<std::size_t>(4 * static_cast<std::size_t>(workers), boxes.size() / kMinChunk);
   if (workers <= 1 || chunks <= 1) {
     CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), report, traits, cutoff, closed);

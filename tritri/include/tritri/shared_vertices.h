@@ -31,12 +31,20 @@
 
 namespace tritri {
 
+namespace detail {
+// A triangle that repeats a vertex index (degenerate): the early-outs answer false.
+inline bool repeats_an_index(const std::array<int, 3>& t) noexcept {
+  return t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+}
+}  // namespace detail
+
 // The same tests for callers that know the plane signs another way (a cached plane,
 // tritri/plane_filter.h). side(t, k) must return the exact sign of corner k of the other
 // triangle against the plane of triangle t: side(0, k) = orient3d(a[0], a[1], a[2], b[k]),
 // side(1, k) = orient3d(b[0], b[1], b[2], a[k]). Each side is asked at most once.
 template <class Side>
 bool meet_only_in_shared_by_sides(const std::array<int, 3>& ia, const std::array<int, 3>& ib, Side&& side) {
+  if (detail::repeats_an_index(ia) || detail::repeats_an_index(ib)) return false;
   int in_b[3] = {-1, -1, -1};  // for each corner of a, its position in b (-1: not shared)
   int shared = 0;
   for (int i = 0; i < 3; ++i)
@@ -99,6 +107,7 @@ bool separated_by_plane(Side&& side) {
 template <Kernel K>
 bool coplanar_meet_only_in_shared(const K& k, const std::array<typename K::Point, 3>& a, const std::array<int, 3>& ia,
                                   const std::array<typename K::Point, 3>& b, const std::array<int, 3>& ib) {
+  if (detail::repeats_an_index(ia) || detail::repeats_an_index(ib)) return false;
   int in_b[3] = {-1, -1, -1};
   int shared = 0;
   for (int i = 0; i < 3; ++i)
@@ -172,6 +181,7 @@ template <Kernel K>
 bool touches_only_in_shared(const K& k, const std::array<typename K::Point, 3>& a, const std::array<int, 3>& ia,
                             const std::array<typename K::Point, 3>& b, const std::array<int, 3>& ib,
                             const Sign (&sb)[3]) {
+  if (detail::repeats_an_index(ia) || detail::repeats_an_index(ib)) return false;
   int zero[3], nz = 0, pos = 0, neg = 0;
   for (int c = 0; c < 3; ++c) {
     if (sb[c] == Sign::Zero) zero[nz++] = c;

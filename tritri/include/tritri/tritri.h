@@ -26,6 +26,7 @@
 #include "tritri/double_kernel.h"
 #include "tritri/counting_kernel.h"
 #include "tritri/classify.h"
+#include "tritri/plane_filter.h"
 #include "tritri/shared_vertices.h"
 
 #if __has_include(<CGAL/Kernel/global_functions.h>)
