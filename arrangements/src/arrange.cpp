@@ -48,21 +48,23 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
 
   // Stage 2: the pairs to classify (overlapping bounding boxes, exact early-outs).
   t0 = std::chrono::steady_clock::now();
-  const DetectedPairs detected = detect_pairs(soup.vertices, soup.triangles, workers, soup.polygon);
-  const auto& pairs = detected.pairs;
+  DetectedPairs detected = detect_pairs(soup.vertices, soup.triangles, workers, soup.polygon);
   s.candidate_pairs = detected.box_pairs;
-  s.classified_pairs = pairs.size();
+  s.classified_pairs = detected.pairs.size();
   s.t_detect_s = seconds_since(t0);
 
   // Stages 3 and 4 (timed together as "classify"): classify every candidate pair, then
-  // merge the records into the intersection graph.
+  // merge the records into the intersection graph. Each intermediate is freed as soon as
+  // the next stage has consumed it (peak memory).
   t0 = std::chrono::steady_clock::now();
   tritri::PredicateCounts counts;
-  const auto records = classify_pairs(soup.vertices, soup.triangles, pairs, options.classifier,
-                                      options.count_predicates ? &counts : nullptr, detected.planes);
+  PairRecords records = classify_pairs(soup.vertices, soup.triangles, detected.pairs, options.classifier,
+                                       options.count_predicates ? &counts : nullptr, detected.planes);
+  detected = DetectedPairs{};
   s.orient3d_calls = counts.orient3d;
   s.orient2d_calls = counts.orient2d;
   IntersectionGraph graph = build_intersection_graph(soup.vertices, soup.triangles, records);
+  records = PairRecords{};
   s.t_classify_s = seconds_since(t0);
   s.intersecting_pairs = graph.intersecting_pairs;
   s.coplanar_pairs = graph.coplanar_pairs;
@@ -75,6 +77,7 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
   TriangulationInfo info;
   r.mesh = triangulate(soup, graph, pre.scale_exponent, info);
   s.tpi = info.new_tpi;
+  if (!keep) graph = IntersectionGraph{};
   s.t_triangulate_s = seconds_since(t0);
 
   // Output counts (the writers are the caller's: arrangements/write_mesh.h).

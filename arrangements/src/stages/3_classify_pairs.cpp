@@ -59,16 +59,15 @@ void classify_range(const K& k, const std::vector<Vec3>& V, const std::vector<Tr
 
 }  // namespace
 
-std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                                             const std::vector<std::pair<int, int>>& pairs, Classifier classifier,
-                                             tritri::PredicateCounts* counts,
-                                             std::span<const tritri::PlaneFilter> planes) {
+PairRecords classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
+                           const std::vector<std::pair<int, int>>& pairs, Classifier classifier,
+                           tritri::PredicateCounts* counts, std::span<const tritri::PlaneFilter> planes) {
   // Fixed chunks, concatenated in order (the loop tritri's batch API uses too): the
   // output does not depend on scheduling.
   constexpr std::size_t chunk = 2048;
   // Counting: one PredicateCounts per chunk (one worker at a time), summed at the end.
   std::vector<tritri::PredicateCounts> chunk_counts(counts ? (pairs.size() + chunk - 1) / chunk : 0);
-  std::vector<PairIntersection> all = tritri::detail::collect_in_order<PairIntersection>(
+  PairRecords all(tritri::detail::collect_chunks_in_order<PairIntersection>(
       pairs.size(), chunk,
       [&](std::size_t c, std::size_t begin, std::size_t end, std::vector<PairIntersection>& found) {
         if (counts)
@@ -76,7 +75,7 @@ std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const s
                          classifier, found);
         else
           classify_range(tritri::DoubleKernel{}, V, F, planes, pairs, begin, end, classifier, found);
-      });
+      }));
   for (const auto& n : chunk_counts) {
     counts->orient3d += n.orient3d;
     counts->orient2d += n.orient2d;

@@ -6,7 +6,8 @@
 // Inputs:  V, F the preprocessed soup; pairs candidate pairs (i < j); classifier which
 //          classifier; threads (<= 0: all cores).
 // Output:  one PairIntersection per intersecting pair, in the order of `pairs`
-//          (deterministic for any number of threads).
+//          (deterministic for any number of threads), as PairRecords (the loop's chunks,
+//          not concatenated).
 // Pairs that share vertices and meet only there give no record (the classifiers drop
 // them); in the pipeline stage 2 has already dropped most of them (detect_pairs).
 // counts: null (the default) runs every predicate on tritri::DoubleKernel, nothing
@@ -33,9 +34,8 @@
 
 namespace arrangements {
 
-std::vector<PairIntersection> classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                                             const std::vector<std::pair<int, int>>& pairs, Classifier classifier,
-                                             tritri::PredicateCounts* counts = nullptr,
-                                             std::span<const tritri::PlaneFilter> planes = {});
+PairRecords classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
+                           const std::vector<std::pair<int, int>>& pairs, Classifier classifier,
+                           tritri::PredicateCounts* counts = nullptr, std::span<const tritri::PlaneFilter> planes = {});
 
 }  // namespace arrangements

@@ -12,7 +12,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include <tritri/location.h>
 #include <tritri/result.h>
@@ -50,6 +52,65 @@ struct PairIntersection {
   bool coplanar = false;
   tritri::StaticVector<PairPoint, 6> points;
   tritri::StaticVector<tritri::Segment, 6> segments;  // indices into points
+};
+
+// The records of a classification, in pair order, held in the chunks its parallel loop
+// filled (tritri::detail::collect_chunks_in_order): concatenating them would double the
+// peak memory when there are millions. Iterates like one sequence.
+class PairRecords {
+ public:
+  PairRecords() = default;
+  explicit PairRecords(std::vector<std::vector<PairIntersection>> chunks) : chunks_(std::move(chunks)) {
+    for (const auto& c : chunks_) size_ += c.size();
+  }
+  PairRecords(std::vector<PairIntersection> all) {  // NOLINT: one chunk
+    size_ = all.size();
+    chunks_.push_back(std::move(all));
+  }
+
+  class const_iterator {
+   public:
+    using value_type = PairIntersection;
+    using difference_type = std::ptrdiff_t;
+    const_iterator() = default;
+    const_iterator(const std::vector<std::vector<PairIntersection>>* c, std::size_t chunk) : c_(c), chunk_(chunk) {
+      skip_empty();
+    }
+    const PairIntersection& operator*() const { return (*c_)[chunk_][pos_]; }
+    const PairIntersection* operator->() const { return &(*c_)[chunk_][pos_]; }
+    const_iterator& operator++() {
+      ++pos_;
+      skip_empty();
+      return *this;
+    }
+    const_iterator operator++(int) {
+      const_iterator old = *this;
+      ++*this;
+      return old;
+    }
+    friend bool operator==(const const_iterator& a, const const_iterator& b) {
+      return a.chunk_ == b.chunk_ && a.pos_ == b.pos_;
+    }
+
+   private:
+    void skip_empty() {
+      while (chunk_ < c_->size() && pos_ == (*c_)[chunk_].size()) {
+        ++chunk_;
+        pos_ = 0;
+      }
+    }
+    const std::vector<std::vector<PairIntersection>>* c_ = nullptr;
+    std::size_t chunk_ = 0, pos_ = 0;
+  };
+
+  const_iterator begin() const { return {&chunks_, 0}; }
+  const_iterator end() const { return {&chunks_, chunks_.size()}; }
+  std::size_t size() const noexcept { return size_; }
+  bool empty() const noexcept { return size_ == 0; }
+
+ private:
+  std::vector<std::vector<PairIntersection>> chunks_;
+  std::size_t size_ = 0;
 };
 
 }  // namespace arrangements

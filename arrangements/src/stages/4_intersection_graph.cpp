@@ -13,6 +13,7 @@
 #include <tritri/projection.h>
 
 #include "support/auxiliary_point.h"
+#include "support/side_of_line.h"
 
 namespace arrangements {
 namespace {
@@ -96,7 +97,7 @@ Location locate(const std::vector<tritri::ImplicitPoint>& P, const Tri& t, tritr
     if (t[k] == x) return Location::vertex(k);
   int s[3];
   for (int k = 0; k < 3; ++k) {
-    s[k] = tritri::to_int(tritri::orient2d(P[t[k]], P[t[(k + 1) % 3]], P[x], plane)) * orientation;
+    s[k] = side_of_line(P[t[k]], P[t[(k + 1) % 3]], P[x], plane, &P[t[(k + 2) % 3]]) * orientation;
     if (s[k] < 0) return Location::outside();
   }
   const Location l = tritri::location_from_edge_signs(s);
@@ -158,7 +159,7 @@ void share_coplanar(const std::vector<Vec3>& V, const std::vector<Tri>& F, Inter
 }  // namespace
 
 IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                                           const std::vector<PairIntersection>& pairs) {
+                                           const PairRecords& pairs) {
   IntersectionGraph g;
   g.num_input_vertices = static_cast<int>(V.size());
   build_edges(F, g);
@@ -167,10 +168,15 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   // LPI may use the plane of either triangle on either side, so several pairs describe
   // it differently); an edge crossing a face by its LPI. Each name keeps its smallest LPI.
   std::vector<std::pair<PointName, LpiKey>> named;
+  std::size_t new_points = 0;
+  for (const auto& p : pairs)
+    for (const auto& q : p.points) new_points += q.vertex < 0;
+  named.reserve(new_points);
   for (const auto& p : pairs)
     for (const auto& q : p.points)
       if (q.vertex < 0) named.emplace_back(point_name(F, p, q), q.lpi);
-  sort_unique(named);
+  tbb::parallel_sort(named.begin(), named.end());
+  named.erase(std::unique(named.begin(), named.end()), named.end());
   std::vector<PointName> names;
   std::vector<LpiKey> keys;
   for (const auto& [name, lpi] : named)
@@ -178,6 +184,7 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
       names.push_back(name);
       keys.push_back(lpi);
     }
+  named = {};  // freed before the points are built (peak memory)
   std::vector<tritri::ImplicitPoint> lpis(keys.size());
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { lpis[i] = make_lpi(V, F, keys[i]); });
 

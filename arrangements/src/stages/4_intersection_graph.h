@@ -66,6 +66,6 @@ struct IntersectionGraph {
 //          pairs the records of intersecting pairs (classify_pairs).
 // Output:  the graph. Exact. Cost: O(P log P) for P new points plus the records.
 IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                                           const std::vector<PairIntersection>& pairs);
+                                           const PairRecords& pairs);
 
 }  // namespace arrangements

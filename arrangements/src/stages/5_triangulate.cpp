@@ -119,7 +119,7 @@ OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& g, int
       emit(soup.triangles[t], ti, soup.label_set[t]);
       continue;
     }
-    const Piece& p = pieces[t];
+    Piece p = std::move(pieces[t]);  // freed once emitted (peak memory)
     std::vector<int> cover_labels(p.covers.size());
     for (std::size_t c = 0; c < p.covers.size(); ++c) {
       LabelSet merged;

@@ -1,5 +1,7 @@
 #include "stages/5_triangulate_triangle.h"
 
+#include "support/side_of_line.h"
+
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -446,8 +448,8 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
       bool inside = true;
       for (int k = 0; k < 3 && inside; ++k)
         for (int e = 0; e < 3 && inside; ++e)
-          inside = partner_sign[q] * tritri::to_int(tritri::orient2d(g.points[u[e]], g.points[u[(e + 1) % 3]],
-                                                                     lt.pts[T.v[k]], plane)) >=
+          inside = partner_sign[q] * side_of_line(g.points[u[e]], g.points[u[(e + 1) % 3]], lt.pts[T.v[k]], plane,
+                                                  &g.points[u[(e + 2) % 3]]) >=
                    0;
       if (inside) cover.push_back(partners[q]);
     }

@@ -8,7 +8,7 @@
 // So the result depends only on the inputs, never on scheduling or on the number of
 // threads (oneTBB; the caller's arena or global_control limits apply). Per-chunk state
 // (e.g. predicate counters) can be indexed by c.
-// Cost: n visits, parallel; one extra copy of the results.
+// Cost: n visits, parallel; one extra copy of the results (collect_chunks_in_order: none).
 #pragma once
 
 #include <tbb/parallel_for.h>
@@ -18,14 +18,22 @@
 
 namespace tritri::detail {
 
+// The same loop, the per-chunk vectors returned as they are (no concatenated copy: at
+// millions of results that copy doubles the peak memory); in order, chunk by chunk.
 template <class T, class Visit>
-std::vector<T> collect_in_order(std::size_t n, std::size_t chunk, const Visit& visit) {
+std::vector<std::vector<T>> collect_chunks_in_order(std::size_t n, std::size_t chunk, const Visit& visit) {
   const std::size_t chunks = (n + chunk - 1) / chunk;
   std::vector<std::vector<T>> found(chunks);
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
     const std::size_t begin = c * chunk, end = begin + chunk < n ? begin + chunk : n;
     visit(c, begin, end, found[c]);
   });
+  return found;
+}
+
+template <class T, class Visit>
+std::vector<T> collect_in_order(std::size_t n, std::size_t chunk, const Visit& visit) {
+  std::vector<std::vector<T>> found = collect_chunks_in_order<T>(n, chunk, visit);
   std::size_t total = 0;
   for (const auto& f : found) total += f.size();
   std::vector<T> out;
