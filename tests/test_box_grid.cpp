@@ -30,6 +30,7 @@
 #include <utility>
 #include <vector>
 
+#include "support/brute_force_box_pairs.h"
 #include "support/test_scale.h"
 
 namespace {
@@ -56,23 +57,7 @@ void add_triangle(Soup& s, const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 // All pairs i < j whose closed boxes overlap, by the definition, from the corners.
-Pairs brute_force_pairs(const Soup& s) {
-  std::vector<std::array<double, 6>> box(s.F.size());
-  for (std::size_t t = 0; t < s.F.size(); ++t)
-    for (int a = 0; a < 3; ++a) {
-      const double x = s.V[s.F[t][0]][a], y = s.V[s.F[t][1]][a], z = s.V[s.F[t][2]][a];
-      box[t][a] = std::min({x, y, z});
-      box[t][a + 3] = std::max({x, y, z});
-    }
-  Pairs out;
-  for (std::size_t i = 0; i < box.size(); ++i)
-    for (std::size_t j = i + 1; j < box.size(); ++j) {
-      bool overlap = true;
-      for (int a = 0; a < 3; ++a) overlap = overlap && box[i][a] <= box[j][a + 3] && box[j][a] <= box[i][a + 3];
-      if (overlap) out.emplace_back(static_cast<int>(i), static_cast<int>(j));
-    }
-  return out;
-}
+Pairs brute_force_pairs(const Soup& s) { return tritri_test::brute_force_box_pairs(s.V, s.F); }
 
 // The pairs of `a` (sorted) missing from `b` (sorted): their count and the first few.
 std::string missing(const Pairs& a, const Pairs& b) {

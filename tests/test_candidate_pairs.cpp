@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "support/brute_force_box_pairs.h"
 #include "support/shared_meshes.h"
 
 namespace {
@@ -35,20 +36,7 @@ using Pairs = std::vector<std::pair<int, int>>;
 
 // All pairs i < j whose closed boxes overlap, by the definition.
 Pairs brute_force_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F) {
-  std::vector<std::array<double, 6>> box(F.size());
-  for (std::size_t t = 0; t < F.size(); ++t)
-    for (int a = 0; a < 3; ++a) {
-      box[t][a] = std::min({V[F[t][0]][a], V[F[t][1]][a], V[F[t][2]][a]});
-      box[t][a + 3] = std::max({V[F[t][0]][a], V[F[t][1]][a], V[F[t][2]][a]});
-    }
-  Pairs out;
-  for (std::size_t i = 0; i < F.size(); ++i)
-    for (std::size_t j = i + 1; j < F.size(); ++j) {
-      bool overlap = true;
-      for (int a = 0; a < 3; ++a) overlap = overlap && box[i][a] <= box[j][a + 3] && box[j][a] <= box[i][a + 3];
-      if (overlap) out.emplace_back(static_cast<int>(i), static_cast<int>(j));
-    }
-  return out;
+  return tritri_test::brute_force_box_pairs(V, F);
 }
 
 TEST(CandidatePairs, TouchingBoxesCountAndBoxesOneUlpApartDoNot) {

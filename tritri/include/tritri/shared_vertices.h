@@ -36,6 +36,19 @@ namespace detail {
 inline bool repeats_an_index(const std::array<int, 3>& t) noexcept {
   return t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
 }
+// For each corner of a, its position in b (-1: not shared); returns how many are shared.
+inline int shared_corners(const std::array<int, 3>& ia, const std::array<int, 3>& ib, int (&in_b)[3]) noexcept {
+  int shared = 0;
+  for (int i = 0; i < 3; ++i) {
+    in_b[i] = -1;
+    for (int j = 0; j < 3; ++j)
+      if (ia[i] == ib[j]) {
+        in_b[i] = j;
+        ++shared;
+      }
+  }
+  return shared;
+}
 }  // namespace detail
 
 // The same tests for callers that know the plane signs another way (a cached plane,
@@ -45,14 +58,8 @@ inline bool repeats_an_index(const std::array<int, 3>& t) noexcept {
 template <class Side>
 bool meet_only_in_shared_by_sides(const std::array<int, 3>& ia, const std::array<int, 3>& ib, Side&& side) {
   if (detail::repeats_an_index(ia) || detail::repeats_an_index(ib)) return false;
-  int in_b[3] = {-1, -1, -1};  // for each corner of a, its position in b (-1: not shared)
-  int shared = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (ia[i] == ib[j]) {
-        in_b[i] = j;
-        ++shared;
-      }
+  int in_b[3];  // for each corner of a, its position in b (-1: not shared)
+  const int shared = detail::shared_corners(ia, ib, in_b);
   if (shared == 1) {
     // orient3d(u, a1, a2, .) with u = a[i] is a cyclic rotation of plane(a): same sign.
     const int i = in_b[0] >= 0 ? 0 : (in_b[1] >= 0 ? 1 : 2), j = in_b[i];
@@ -108,14 +115,8 @@ template <Kernel K>
 bool coplanar_meet_only_in_shared(const K& k, const std::array<typename K::Point, 3>& a, const std::array<int, 3>& ia,
                                   const std::array<typename K::Point, 3>& b, const std::array<int, 3>& ib) {
   if (detail::repeats_an_index(ia) || detail::repeats_an_index(ib)) return false;
-  int in_b[3] = {-1, -1, -1};
-  int shared = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (ia[i] == ib[j]) {
-        in_b[i] = j;
-        ++shared;
-      }
+  int in_b[3];
+  const int shared = detail::shared_corners(ia, ib, in_b);
   const auto [plane, orientation] = projection(k, a[0], a[1], a[2], dominant_plane(a[0], a[1], a[2]));
   if (orientation == 0 || (shared != 1 && shared != 2)) return false;
   if (shared == 2) {
