@@ -191,9 +191,11 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   // 2. Exact deduplication among new points: sort by exact lexicographic order; each run
   // of equal points is represented by its smallest key index (deterministic).
   // Certified x intervals settle most comparisons with two double comparisons.
-  std::vector<tritri::XBounds> xb(keys.size());
-  tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { xb[i] = tritri::x_bounds(lpis[i]); });
-  auto compare = [&](int a, int b) { return tritri::compare_xyz_bounded(lpis[a], xb[a], lpis[b], xb[b]); };
+  // The order: along tritri::kSortDirection (ties by xyz), where distinct points of
+  // structured inputs rarely tie; certified intervals settle almost every comparison.
+  std::vector<tritri::XBounds> db(keys.size());
+  tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { db[i] = tritri::direction_bounds(lpis[i]); });
+  auto compare = [&](int a, int b) { return tritri::compare_along_direction(lpis[a], db[a], lpis[b], db[b]); };
   std::vector<int> order(keys.size());
   std::iota(order.begin(), order.end(), 0);
   tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
@@ -220,9 +222,10 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   std::vector<int> vertex_match(keys.size(), -1);
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
     if (representative[i] != static_cast<int>(i)) return;
+    const tritri::XBounds xi = tritri::x_bounds(lpis[i]);
     auto compare_vertex = [&](int vid) {
       const tritri::XBounds at{V[vid][0], V[vid][0]};
-      return tritri::compare_xyz_bounded(g.points[vid], at, lpis[i], xb[i]);
+      return tritri::compare_xyz_bounded(g.points[vid], at, lpis[i], xi);
     };
     auto it = std::lower_bound(by_position.begin(), by_position.end(), 0,
                                [&](int vid, int) { return compare_vertex(vid) < 0; });
@@ -239,7 +242,8 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
     }
   }
   for (std::size_t i = 0; i < keys.size(); ++i) final_id[i] = final_id[representative[i]];
-  // The new points in the order of the sort (triangulation looks TPIs up in it).
+  // The new points in the order of the sort (triangulation looks TPIs up in it, with
+  // tritri::compare_along_direction).
   for (const int k : order)
     if (representative[k] == k && vertex_match[k] < 0) g.new_points_sorted.push_back(final_id[k]);
 

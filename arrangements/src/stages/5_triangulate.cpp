@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include <tritri/implicit_predicates.h>
+#include <tritri/point_bounds.h>
 
 #include "stages/5_triangulate_triangle.h"
 
@@ -71,11 +72,17 @@ OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& g, int
                        [&](int a, int b) { return soup.vertices[a] < soup.vertices[b]; });
   }
   auto existing = [&](const ImplicitPoint& x) {
-    for (const std::vector<int>* sorted : {static_cast<const std::vector<int>*>(&explicit_sorted), &lpi_sorted}) {
-      auto it = std::lower_bound(sorted->begin(), sorted->end(), 0,
-                                 [&](int id, int) { return tritri::compare_xyz(g.points[id], x) < 0; });
-      if (it != sorted->end() && tritri::compare_xyz(g.points[*it], x) == 0) return *it;
-    }
+    // Input vertices in xyz order; new points in the graph's order (compare_along_direction).
+    auto it = std::lower_bound(explicit_sorted.begin(), explicit_sorted.end(), 0,
+                               [&](int id, int) { return tritri::compare_xyz(g.points[id], x) < 0; });
+    if (it != explicit_sorted.end() && tritri::compare_xyz(g.points[*it], x) == 0) return *it;
+    const tritri::XBounds bx = tritri::direction_bounds(x);
+    auto along = [&](int id) {
+      return tritri::compare_along_direction(g.points[id], tritri::direction_bounds(g.points[id]), x, bx);
+    };
+    const auto at =
+        std::lower_bound(lpi_sorted.begin(), lpi_sorted.end(), 0, [&](int id, int) { return along(id) < 0; });
+    if (at != lpi_sorted.end() && along(*at) == 0) return *at;
     return -1;
   };
   std::vector<int> tpi_id(tpi.size());

@@ -7,6 +7,11 @@
 // many implicit points (deduplication), where most comparisons are between points far
 // apart: the bounds are computed once per point instead of per comparison.
 //
+// direction_bounds(p), compare_along_direction(p, bp, q, bq): an interval for kSortDirection . p and an exact total
+// order along a fixed direction, for deduplication by sorting (coincident points compare equal): structured inputs have
+// many distinct points with exactly equal x, which compare_xyz can only separate with exact arithmetic (and caches it
+// per point: memory).
+//
 // Why the interval holds: the cached X and W carry certified absolute errors e = gamma *
 // perm (tritri/detail/filtered_value.h: depth * 2^-53 * (1 + 2^-20) * perm, the bound
 // certified_sign uses). With |W^| > e_W, W has the sign of W^ and X / W lies between the
@@ -17,7 +22,11 @@
 // Cost: a few flops per point; compare_xyz_bounded costs two comparisons when it decides.
 #pragma once
 
+#include <CGAL/Mpzf.h>
+
+#include <array>
 #include <cmath>
+#include <utility>
 #include <limits>
 
 #include "tritri/implicit_point.h"
@@ -30,22 +39,92 @@ struct XBounds {
   double hi = std::numeric_limits<double>::infinity();
 };
 
-inline XBounds x_bounds(const ImplicitPoint& p) {
-  if (p.is_explicit()) return {p.approx()[0], p.approx()[0]};
-  const auto& f = p.filtered();
-  const auto& d = ImplicitPoint::rounding_depth(p.kind());
-  constexpr double u = 0x1p-53 * (1.0 + 0x1p-20);
-  const double ex = f.x.perm * (d.x.depth * u), ew = f.w.perm * (d.w.depth * u);
-  const double s = f.w.v < 0 ? -1.0 : 1.0;
-  const double w = std::fabs(f.w.v), x = s * f.x.v;
-  if (!(w > ew) || !std::isfinite(w) || !std::isfinite(x) || !std::isfinite(ex) || !std::isfinite(ew)) return {};
-  const double wl = w - ew, wh = w + ew, xl = x - ex, xh = x + ex;
-  double lo = xl / (xl >= 0 ? wh : wl);
-  double hi = xh / (xh >= 0 ? wl : wh);
+namespace detail {
+
+// An interval that certainly contains N / W, for exact N, W with |N - n| <= en and
+// |W - w| <= ew (see the top comment); (-inf, +inf) when |w| <= ew or anything is not
+// finite.
+inline XBounds quotient_bounds(double n, double en, double w, double ew) {
+  const double s = w < 0 ? -1.0 : 1.0;
+  w = std::fabs(w);
+  n *= s;
+  if (!(w > ew) || !std::isfinite(w) || !std::isfinite(n) || !std::isfinite(en) || !std::isfinite(ew)) return {};
+  const double wl = w - ew, wh = w + ew, nl = n - en, nh = n + en;
+  double lo = nl / (nl >= 0 ? wh : wl);
+  double hi = nh / (nh >= 0 ? wl : wh);
   if (!std::isfinite(lo) || !std::isfinite(hi)) return {};
   lo -= std::fabs(lo) * 0x1p-50 + 0x1p-1070;
   hi += std::fabs(hi) * 0x1p-50 + 0x1p-1070;
   return {lo, hi};
+}
+
+inline constexpr double kFilterGamma = 0x1p-53 * (1.0 + 0x1p-20);  // per rounding, as certified_sign
+
+}  // namespace detail
+
+inline XBounds x_bounds(const ImplicitPoint& p) {
+  if (p.is_explicit()) return {p.approx()[0], p.approx()[0]};
+  const auto& f = p.filtered();
+  const auto& d = ImplicitPoint::rounding_depth(p.kind());
+  return detail::quotient_bounds(f.x.v, f.x.perm * (d.x.depth * detail::kFilterGamma), f.w.v,
+                                 f.w.perm * (d.w.depth * detail::kFilterGamma));
+}
+
+// A sorting direction with no simple relation to the axes: distinct points of structured
+// inputs (grids, copies rotated about an axis) often share x or even x and y exactly,
+// which only the exact stage can confirm; along this direction they rarely tie.
+inline constexpr std::array<double, 3> kSortDirection = {1.0, 0x1.6a09e667f3bcdp-1, 0x1.3c6ef372fe94fp-2};
+
+// An interval that certainly contains kSortDirection . p. Explicit points: the dot
+// product in double (three products, two sums: at most 4u of the absolute terms, plus
+// underflow). Implicit points: the same on the cached X, Y, Z plus their certified errors,
+// divided by W as in quotient_bounds.
+inline XBounds direction_bounds(const ImplicitPoint& p) {
+  const auto& d = kSortDirection;
+  constexpr double four_u = 4 * 0x1p-53;
+  if (p.is_explicit()) {
+    const auto& c = p.approx();
+    const double t0 = d[0] * c[0], t1 = d[1] * c[1], t2 = d[2] * c[2];
+    const double e = (std::fabs(t0) + std::fabs(t1) + std::fabs(t2)) * four_u + 0x1p-1070;
+    return detail::quotient_bounds(t0 + t1 + t2, e * (1 + 0x1p-40), 1.0, 0.0);
+  }
+  const auto& f = p.filtered();
+  const auto& r = ImplicitPoint::rounding_depth(p.kind());
+  const double ex = f.x.perm * (r.x.depth * detail::kFilterGamma);
+  const double ey = f.y.perm * (r.y.depth * detail::kFilterGamma);
+  const double ez = f.z.perm * (r.z.depth * detail::kFilterGamma);
+  const double t0 = d[0] * f.x.v, t1 = d[1] * f.y.v, t2 = d[2] * f.z.v;
+  const double e =
+      d[0] * ex + d[1] * ey + d[2] * ez + (std::fabs(t0) + std::fabs(t1) + std::fabs(t2)) * four_u + 0x1p-1070;
+  return detail::quotient_bounds(t0 + t1 + t2, e * (1 + 0x1p-40), f.w.v, f.w.perm * (r.w.depth * detail::kFilterGamma));
+}
+
+// A total order on points, exact: by kSortDirection . p, ties by compare_xyz; 0 exactly
+// for coincident points. The bounds (direction_bounds) settle almost every comparison;
+// otherwise the exact homogeneous coordinates decide (CGAL::Mpzf).
+inline int compare_along_direction(const ImplicitPoint& p, const XBounds& bp, const ImplicitPoint& q,
+                                   const XBounds& bq) {
+  if (bp.hi < bq.lo) return -1;
+  if (bq.hi < bp.lo) return 1;
+  const auto& d = kSortDirection;
+  auto numerator_and_w = [&](const ImplicitPoint& a) {
+    if (a.is_explicit()) {
+      const auto& c = a.approx();
+      return std::pair<CGAL::Mpzf, CGAL::Mpzf>(CGAL::Mpzf(d[0]) * CGAL::Mpzf(c[0]) +
+                                                   CGAL::Mpzf(d[1]) * CGAL::Mpzf(c[1]) +
+                                                   CGAL::Mpzf(d[2]) * CGAL::Mpzf(c[2]),
+                                               CGAL::Mpzf(1.0));
+    }
+    const auto& h = a.exact_homogeneous();
+    return std::pair<CGAL::Mpzf, CGAL::Mpzf>(CGAL::Mpzf(d[0]) * h.x + CGAL::Mpzf(d[1]) * h.y + CGAL::Mpzf(d[2]) * h.z,
+                                             h.w);
+  };
+  const auto [np, wp] = numerator_and_w(p);
+  const auto [nq, wq] = numerator_and_w(q);
+  // sign(np / wp - nq / wq) = sign(np wq - nq wp) sign(wp) sign(wq).
+  const int s =
+      static_cast<int>((np * wq - nq * wp).sign()) * static_cast<int>(wp.sign()) * static_cast<int>(wq.sign());
+  return s != 0 ? s : compare_xyz(p, q);
 }
 
 inline int compare_xyz_bounded(const ImplicitPoint& p, const XBounds& bp, const ImplicitPoint& q, const XBounds& bq) {
