@@ -44,8 +44,12 @@ DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F
                       [&](std::size_t t) { planes[t] = tritri::plane_filter(V[F[t][0]], V[F[t][1]], V[F[t][2]]); });
   });
 
+  // Kept pairs in fixed-size chunks per thread: no doubling slack, and the chunks are freed
+  // one by one as they are gathered (peak memory: the pairs once, plus one chunk).
+  using Pairs = std::vector<std::pair<int, int>>;
+  constexpr std::size_t kChunk = 1 << 14;
   struct Found {
-    std::vector<std::pair<int, int>> pairs;
+    std::vector<Pairs> chunks;
     std::size_t box_pairs = 0;
   };
   tbb::enumerable_thread_specific<Found> found;
@@ -91,16 +95,25 @@ DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F
         settled = tritri::touches_only_in_shared(k, pb, b, pa, a, sa);
       }
     }
-    if (!settled) local.pairs.emplace_back(i, j);
+    if (settled) return;
+    if (local.chunks.empty() || local.chunks.back().size() == kChunk) {
+      local.chunks.emplace_back();
+      local.chunks.back().reserve(kChunk);
+    }
+    local.chunks.back().emplace_back(i, j);
   });
 
   std::size_t kept = 0;
   for (const Found& f : found) {
     out.box_pairs += f.box_pairs;
-    kept += f.pairs.size();
+    for (const Pairs& c : f.chunks) kept += c.size();
   }
   out.pairs.reserve(kept);
-  for (const Found& f : found) out.pairs.insert(out.pairs.end(), f.pairs.begin(), f.pairs.end());
+  for (Found& f : found)
+    for (Pairs& c : f.chunks) {
+      out.pairs.insert(out.pairs.end(), c.begin(), c.end());
+      Pairs().swap(c);
+    }
   arena.execute([&] { tbb::parallel_sort(out.pairs.begin(), out.pairs.end()); });
   return out;
 }

@@ -132,7 +132,25 @@ void share_coplanar(const std::vector<Vec3>& V, const std::vector<Tri>& F, Inter
     const tritri::Plane plane = proj.first;
     const int orientation = proj.second;
     Additions& a = add[t];
+    // A box around t, and one around each point: an LPI lies inside the segment of its
+    // first two defining points. Disjoint boxes: outside, with no predicate.
+    std::array<double, 3> lo = V[tri[0]], hi = V[tri[0]];
+    for (int k = 1; k < 3; ++k)
+      for (int c = 0; c < 3; ++c) {
+        lo[c] = std::min(lo[c], V[tri[k]][c]);
+        hi[c] = std::max(hi[c], V[tri[k]][c]);
+      }
+    auto surely_outside = [&](const tritri::ImplicitPoint& p) {
+      const bool lpi = p.kind() == tritri::ImplicitPoint::Kind::LPI;
+      if (!lpi && !p.is_explicit()) return false;
+      const auto& e0 = lpi ? p.input(0) : p.approx();
+      const auto& e1 = lpi ? p.input(1) : p.approx();
+      for (int c = 0; c < 3; ++c)
+        if (std::max(e0[c], e1[c]) < lo[c] || std::min(e0[c], e1[c]) > hi[c]) return true;
+      return false;
+    };
     auto place = [&](int x) {
+      if (surely_outside(g.points[x])) return;
       const Location where = locate(g.points, tri, plane, orientation, x);
       if (where.kind == Location::Interior)
         a.inside.push_back(x);
