@@ -24,12 +24,6 @@ void check_threads(int threads) {
     throw std::invalid_argument("candidate_pairs: threads must be at most " + std::to_string(kMaxThreads));
 }
 
-int shared_vertices(const Tri& a, const Tri& b) {
-  int n = 0;
-  for (int x : a) n += (x == b[0]) + (x == b[1]) + (x == b[2]);
-  return n;
-}
-
 }  // namespace
 
 DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F, int threads,
@@ -78,21 +72,22 @@ DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F
         if (b[c] != a[0] && b[c] != a[1] && b[c] != a[2] && side(0, c) != tritri::Sign::Zero) return false;
       return true;
     };
-    const bool shares = shared_vertices(a, b) > 0;
+    int in_b[3];
+    const bool shares = tritri::detail::shared_corners(a, b, in_b) > 0;
     bool settled = shares ? tritri::meet_only_in_shared_by_sides(a, b, side) : tritri::separated_by_plane(side);
-    if (!settled && coplanar()) {
+    if (!settled) {
       const tritri::DoubleKernel k;
       const std::array<Vec3, 3> pa{V[a[0]], V[a[1]], V[a[2]]}, pb{V[b[0]], V[b[1]], V[b[2]]};
-      settled = shares ? tritri::coplanar_meet_only_in_shared(k, pa, a, pb, b) : tritri::coplanar_separated(k, pa, pb);
-    } else if (!settled) {
-      // One triangle touching the other's plane without crossing it.
-      const tritri::DoubleKernel k;
-      const std::array<Vec3, 3> pa{V[a[0]], V[a[1]], V[a[2]]}, pb{V[b[0]], V[b[1]], V[b[2]]};
-      const tritri::Sign sb[3] = {side(0, 0), side(0, 1), side(0, 2)};
-      settled = tritri::touches_only_in_shared(k, pa, a, pb, b, sb);
-      if (!settled) {
-        const tritri::Sign sa[3] = {side(1, 0), side(1, 1), side(1, 2)};
-        settled = tritri::touches_only_in_shared(k, pb, b, pa, a, sa);
+      if (coplanar()) {
+        settled =
+            shares ? tritri::coplanar_meet_only_in_shared(k, pa, a, pb, b) : tritri::coplanar_separated(k, pa, pb);
+      } else {  // one triangle touching the other's plane without crossing it
+        const tritri::Sign sb[3] = {side(0, 0), side(0, 1), side(0, 2)};
+        settled = tritri::touches_only_in_shared(k, pa, a, pb, b, sb);
+        if (!settled) {  // a's signs only now: most pairs are settled by b's
+          const tritri::Sign sa[3] = {side(1, 0), side(1, 1), side(1, 2)};
+          settled = tritri::touches_only_in_shared(k, pb, b, pa, a, sa);
+        }
       }
     }
     if (settled) return;

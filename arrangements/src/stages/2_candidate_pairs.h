@@ -11,10 +11,11 @@
 //            std::invalid_argument)
 //   polygon  #F or empty: TriangleSoup::polygon (triangles of one polygon face, known to
 //            meet only in shared corners and edges, share an id >= 0; never paired)
-// returns `planes`: one tritri::PlaneFilter per triangle (stage 3 reuses them); `pairs`: every pair (i, j), i < j,
-// whose closed bounding boxes overlap and that the exact early-outs below do not settle, sorted, each once;
-// `box_pairs`: how many pairs had overlapping boxes (the stat candidate_pairs). Early-outs, as each box pair is found
-// (tritri::for_each_overlapping_pair, in parallel):
+// returns `pairs`: every pair (i, j), i < j, whose closed bounding boxes overlap and that
+// the exact early-outs below do not settle, sorted, each once; `box_pairs`: how many pairs
+// had overlapping boxes (the stat candidate_pairs); `planes`: one tritri::PlaneFilter per
+// triangle (stage 3 reuses them).
+// Early-outs, as each box pair is found (tritri::for_each_overlapping_pair, in parallel):
 //   - neighbours (a shared vertex or edge by index) that provably meet only in what they
 //     share: tritri::meet_only_in_shared_by_sides, 1 to 4 plane signs;
 //   - other pairs where one triangle lies strictly on one side of the other's plane:
@@ -22,7 +23,9 @@
 //   - coplanar pairs (every free corner of one in the other's plane): neighbours that
 //     meet only in what they share, and disjoint pairs, by orient2d in a projection
 //     (tritri::coplanar_meet_only_in_shared, tritri::coplanar_separated); flat CAD faces
-//     give many of these.
+//     give many of these;
+//   - a triangle touching the other's plane at a vertex or edge that misses the other
+//     (tritri::touches_only_in_shared).
 // Either way the classifiers would report nothing for the pair, so dropping it here
 // changes no result. Plane signs come from one tritri::PlaneFilter per triangle
 // (tritri/plane_filter.h: exact; decisive for slivers) with orient3d as the fallback.

@@ -14,9 +14,6 @@
 namespace arrangements {
 namespace {
 
-// Pairs [begin, end) with the predicates of kernel k, the intersecting ones appended to
-// `found`. (Neighbours that meet only in what they share, and pairs separated by a plane,
-// usually never get here: stage 2 drops them. The classifiers report nothing for them.)
 template <class K>
 bool classify_one(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
                   Classifier classifier, PairIntersection& record) {
@@ -47,12 +44,11 @@ void classify_range(const K& k, const std::vector<Vec3>& V, const std::vector<Tr
         const Vec3* a[3] = {&V[F[ta][0]], &V[F[ta][1]], &V[F[ta][2]]};
         const Vec3* b[3] = {&V[F[tb][0]], &V[F[tb][1]], &V[F[tb][2]]};
         hit = classify_one(tritri::PlaneCachedKernel(a, planes[ta], b, planes[tb]), V, F, ta, tb, classifier, record);
-      } else {
-        hit = classify_one(k, V, F, ta, tb, classifier, record);
+        if (hit) found.push_back(record);
+        continue;
       }
-    } else {
-      hit = classify_one(k, V, F, ta, tb, classifier, record);
     }
+    hit = classify_one(k, V, F, ta, tb, classifier, record);
     if (hit) found.push_back(record);
   }
 }

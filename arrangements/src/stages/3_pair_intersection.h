@@ -63,10 +63,6 @@ class PairRecords {
   explicit PairRecords(std::vector<std::vector<PairIntersection>> chunks) : chunks_(std::move(chunks)) {
     for (const auto& c : chunks_) size_ += c.size();
   }
-  PairRecords(std::vector<PairIntersection> all) {  // NOLINT: one chunk
-    size_ = all.size();
-    chunks_.push_back(std::move(all));
-  }
 
   class const_iterator {
    public:
@@ -82,11 +78,6 @@ class PairRecords {
       ++pos_;
       skip_empty();
       return *this;
-    }
-    const_iterator operator++(int) {
-      const_iterator old = *this;
-      ++*this;
-      return old;
     }
     friend bool operator==(const const_iterator& a, const const_iterator& b) {
       return a.chunk_ == b.chunk_ && a.pos_ == b.pos_;
@@ -106,7 +97,6 @@ class PairRecords {
   const_iterator begin() const { return {&chunks_, 0}; }
   const_iterator end() const { return {&chunks_, chunks_.size()}; }
   std::size_t size() const noexcept { return size_; }
-  bool empty() const noexcept { return size_ == 0; }
 
  private:
   std::vector<std::vector<PairIntersection>> chunks_;

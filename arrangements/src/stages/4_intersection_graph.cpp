@@ -206,11 +206,10 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   std::vector<tritri::ImplicitPoint> lpis(keys.size());
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { lpis[i] = make_lpi(V, F, keys[i]); });
 
-  // 2. Exact deduplication among new points: sort by exact lexicographic order; each run
-  // of equal points is represented by its smallest key index (deterministic).
-  // Certified x intervals settle most comparisons with two double comparisons.
-  // The order: along tritri::kSortDirection (ties by xyz), where distinct points of
-  // structured inputs rarely tie; certified intervals settle almost every comparison.
+  // 2. Exact deduplication among new points: sort by an exact total order, along
+  // tritri::kSortDirection with ties by xyz (distinct points of structured inputs rarely
+  // tie along it; certified intervals settle almost every comparison); each run of equal
+  // points is represented by its smallest key index (deterministic).
   std::vector<tritri::XBounds> db(keys.size());
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { db[i] = tritri::direction_bounds(lpis[i]); });
   auto compare = [&](int a, int b) { return tritri::compare_along_direction(lpis[a], db[a], lpis[b], db[b]); };
