@@ -6,8 +6,9 @@ usage: compare_upstream.py [--arrange build/bin/arrange] [--meshes ../shared/mes
                            [--ember-dir DIR] [--json OUT.jsonl]
 
 For every record with status "ok" it runs the pipeline on the same file (records of
-fan-triangulated variants: triangle meshes, loaded as they are; pairs/ember-*: built with
-../tools/make_ember_pairs.py into --ember-dir when given, skipped otherwise) and compares
+fan-triangulated variants: the file with each polygon split into a fan, as upstream was
+given it; pairs/ember-*: built with ../tools/make_ember_pairs.py into --ember-dir when
+given, skipped otherwise) and compares
 lpi, tpi, referenced output vertices, edges, triangles and the Euler characteristic.
 Prints one line per mismatch and a summary; exit status 1 if anything differs.
 """
@@ -16,6 +17,7 @@ import json
 import os
 import subprocess
 import sys
+import tempfile
 
 sys.dont_write_bytecode = True  # no bench/__pycache__ for cli_args
 from cli_args import MAX_THREADS, Parser, seconds, text, thread_count  # noqa: E402  (after the line above)
@@ -23,6 +25,29 @@ from cli_args import MAX_THREADS, Parser, seconds, text, thread_count  # noqa: E
 KEYS = [("intersection_points", "lpi_points"), ("tpi", "tpi_points"),
         ("out_vertices", "out_verts_referenced"), ("out_edges", "out_edges"),
         ("out_triangles", "out_tris"), ("euler", "euler")]
+
+
+def fan_triangulated_off(path, out):
+    """Write OFF `path` to `out` with every polygon split into the fan (v0, vi, vi+1), as the
+    reference's fan_triangulated variants were made. Our loader triangulates a non-convex
+    polygon without overlaps; a fan may overlap itself, which is what upstream measured."""
+    with open(path) as f:
+        words = [w for line in f for w in line.split("#", 1)[0].split()]
+    if not words or words[0] != "OFF":
+        raise ValueError(f"{path}: fan_triangulated records are only made for OFF files")
+    nv, nf = int(words[1]), int(words[2])
+    at = 4 + 3 * nv
+    tris = []
+    for _ in range(nf):
+        k = int(words[at])
+        face = words[at + 1:at + 1 + k]
+        at += 1 + k
+        tris += [(face[0], face[i], face[i + 1]) for i in range(1, k - 1)]
+    with open(out, "w") as f:
+        f.write(f"OFF\n{nv} {len(tris)} 0\n")
+        for i in range(nv):
+            f.write(" ".join(words[4 + 3 * i:7 + 3 * i]) + "\n")
+        f.writelines(f"3 {a} {b} {c}\n" for a, b, c in tris)
 
 
 def main(argv=None):
@@ -56,6 +81,7 @@ def main(argv=None):
     except OSError as e:
         print(f"compare_upstream.py: --json {a.json}: cannot write ({e})", file=sys.stderr)
         return 2
+    scratch = tempfile.TemporaryDirectory(prefix="compare_upstream.")
     for r in records:
         f = r["file"]
         if r.get("status") != "ok" or (a.only or "") not in f:
@@ -70,6 +96,10 @@ def main(argv=None):
         if not path or not os.path.exists(path):
             skipped += 1
             continue
+        if r.get("variant") == "fan_triangulated":
+            fanned = os.path.join(scratch.name, "fanned.off")
+            fan_triangulated_off(path, fanned)
+            path = fanned
         cmd = [a.arrange, path, "--stats", "--classifier", a.classifier, "--threads", str(a.threads)]
         try:
             p = subprocess.run(cmd, capture_output=True, text=True, timeout=a.timeout or None)
@@ -91,6 +121,7 @@ def main(argv=None):
             print(f"DIFF {f}: " + ", ".join(diffs))
         else:
             same += 1
+    scratch.cleanup()
     if out:
         out.close()
         os.replace(a.json + ".tmp", a.json)
