@@ -7,7 +7,10 @@
 // - compare_along_direction is the exact order (kSortDirection . p, ties by xyz order)
 //   computed from the rationals: antisymmetric, 0 exactly for coincident points, and
 //   consistent with that definition on every pair tried;
-// - the bounds decide most pairs (a useful filter) but never when points coincide.
+// - the bounds decide most pairs (a useful filter) but never when points coincide;
+// - box_bounds(p) contains the exact point, and orient2d_bounded(a, b, box, plane), when it
+//   decides, is the exact sign of orient2d(a, b, p) in that plane (for every plane, a and b
+//   the scene's explicit points), deciding most of them.
 // Cases at TRITRI_TEST_SCALE=1: 200,000 points and 400,000 pairs.
 #include <gtest/gtest.h>
 
@@ -113,6 +116,43 @@ TEST(PointBounds, ComparisonsAreTheExactOrders) {
   EXPECT_GT(equal, 0) << "no coincident pair was generated";
   // A useful filter: most pairs of distinct points are settled by the bounds alone.
   EXPECT_GT(decided_by_bounds, (pairs - equal) / 2) << decided_by_bounds << " of " << pairs - equal;
+}
+
+TEST(PointBounds, BoxesContainThePointsAndDecideOrient2dExactly) {
+  long long tests = 0, decided = 0;
+  tritri_test::run_scenes(
+      103, tritri_test::scaled_count(200000), [&](const tritri_test::Scene& s, tritri_test::Rng& rng, long long left) {
+        std::vector<int> explicit_points;
+        for (int i = 0; i < static_cast<int>(s.points.size()); ++i)
+          if (s.points[i].point.is_explicit()) explicit_points.push_back(i);
+        if (explicit_points.size() < 2) return 0LL;
+        long long n = 0;
+        for (const auto& sample : s.points) {
+          if (n >= left) break;
+          const tritri::BoxBounds box = tritri::box_bounds(sample.point);
+          for (int k = 0; k < 3; ++k)
+            EXPECT_TRUE(contains(box[k], sample.exact[k])) << "axis " << k << ": " << tritri_test::describe(sample.recipe);
+          const auto& a = s.points[explicit_points[rng.uniform(0, static_cast<int>(explicit_points.size()) - 1)]];
+          const auto& b = s.points[explicit_points[rng.uniform(0, static_cast<int>(explicit_points.size()) - 1)]];
+          for (tritri::Plane plane : {tritri::Plane::XY, tritri::Plane::YZ, tritri::Plane::ZX}) {
+            const int i = plane == tritri::Plane::XY ? 0 : (plane == tritri::Plane::YZ ? 1 : 2), j = (i + 1) % 3;
+            const int want = sign_of((b.exact[i] - a.exact[i]) * (sample.exact[j] - a.exact[j]) -
+                                     (b.exact[j] - a.exact[j]) * (sample.exact[i] - a.exact[i]));
+            const int got = tritri::orient2d_bounded(a.point.approx(), b.point.approx(), box, plane);
+            ++tests;
+            if (got == tritri::kUndecided) continue;
+            ++decided;
+            EXPECT_EQ(got, want) << tritri_test::describe(sample.recipe) << " plane " << i;
+            if (want == 0) {
+              EXPECT_TRUE(sample.point.is_explicit()) << "a zero certified for a box that is not a point";
+            }
+          }
+          ++n;
+          if (::testing::Test::HasFailure()) return n;
+        }
+        return n;
+      });
+  EXPECT_GT(decided, tests / 2) << decided << " of " << tests;
 }
 
 // Distinct points sharing x, or x and y, exactly (grids, copies about an axis): the

@@ -90,14 +90,23 @@ SegmentSupport segment_support(const std::vector<Tri>& F, const PairIntersection
 // Where point x (in t's plane) lies in closed triangle t, which has orientation
 // `orientation` != 0 in `plane`. A vertex of t is recognised by its id; a point at a
 // vertex's position with another id cannot occur (points are deduplicated) and is
-// reported Outside.
+// reported Outside. The three edge signs are first asked of a filter on x's certified
+// box (tritri::orient2d_bounded: a few flops, decides unless x is near the edge's line);
+// only the undecided ones go to side_of_line.
 Location locate(const std::vector<tritri::ImplicitPoint>& P, const Tri& t, tritri::Plane plane, int orientation,
                 int x) {
   for (int k = 0; k < 3; ++k)
     if (t[k] == x) return Location::vertex(k);
+  const tritri::BoxBounds box = tritri::box_bounds(P[x]);
   int s[3];
   for (int k = 0; k < 3; ++k) {
-    s[k] = side_of_line(P[t[k]], P[t[(k + 1) % 3]], P[x], plane, &P[t[(k + 2) % 3]]) * orientation;
+    s[k] = tritri::orient2d_bounded(P[t[k]].approx(), P[t[(k + 1) % 3]].approx(), box, plane);
+    if (s[k] != tritri::kUndecided && s[k] * orientation < 0) return Location::outside();
+  }
+  for (int k = 0; k < 3; ++k) {
+    if (s[k] == tritri::kUndecided)
+      s[k] = side_of_line(P[t[k]], P[t[(k + 1) % 3]], P[x], plane, &P[t[(k + 2) % 3]]);
+    s[k] *= orientation;
     if (s[k] < 0) return Location::outside();
   }
   const Location l = tritri::location_from_edge_signs(s);
@@ -116,11 +125,12 @@ struct Additions {
 // and u's segments whose endpoints both lie in t are added to t's segments. Without it, a
 // constraint of u meeting u's edge inside t would cross t's copy of that edge at a point t
 // does not know, and t's triangulation would construct it again. Additions are computed
-// from the lists as they were before, so the result does not depend on processing order;
-// the caller sorts and deduplicates afterwards.
-// Exactness: point location is orient2d on implicit points (tritri's filtered exact
-// predicates) in a projection where t is not degenerate. Cost: proportional to the points
-// and segments of coplanar partners.
+// from the lists as they were before, so the result does not depend on processing order.
+// Precondition: the lists are sorted and unique; so are they after.
+// Exactness: point location is orient2d on implicit points (a certified filter, then
+// tritri's filtered exact predicates) in a projection where t is not degenerate. Cost:
+// one location per distinct point of t's coplanar partners (points on an edge two
+// partners share, and segment ends, are located once), most of them settled by boxes.
 void share_coplanar(const std::vector<Vec3>& V, const std::vector<Tri>& F, IntersectionGraph& g) {
   std::vector<Additions> add(F.size());
   tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
@@ -132,46 +142,66 @@ void share_coplanar(const std::vector<Vec3>& V, const std::vector<Tri>& F, Inter
     const tritri::Plane plane = proj.first;
     const int orientation = proj.second;
     Additions& a = add[t];
-    // A box around t, and one around each point: an LPI lies inside the segment of its
-    // first two defining points. Disjoint boxes: outside, with no predicate.
     std::array<double, 3> lo = V[tri[0]], hi = V[tri[0]];
     for (int k = 1; k < 3; ++k)
       for (int c = 0; c < 3; ++c) {
         lo[c] = std::min(lo[c], V[tri[k]][c]);
         hi[c] = std::max(hi[c], V[tri[k]][c]);
       }
-    auto surely_outside = [&](const tritri::ImplicitPoint& p) {
-      const bool lpi = p.kind() == tritri::ImplicitPoint::Kind::LPI;
-      if (!lpi && !p.is_explicit()) return false;
-      const auto& e0 = lpi ? p.input(0) : p.approx();
-      const auto& e1 = lpi ? p.input(1) : p.approx();
-      for (int c = 0; c < 3; ++c)
-        if (std::max(e0[c], e1[c]) < lo[c] || std::min(e0[c], e1[c]) > hi[c]) return true;
-      return false;
-    };
-    auto place = [&](int x) {
-      if (surely_outside(g.points[x])) return;
-      const Location where = locate(g.points, tri, plane, orientation, x);
-      if (where.kind == Location::Interior)
-        a.inside.push_back(x);
-      else if (where.kind == Location::Edge)
-        a.on_edge.push_back({g.triangle_edges[t][where.id], x});
-    };
+    // The points to locate: (id, 1 if it is one of a partner's points, 0 if only a
+    // segment end, such as a partner's corner), each id once.
+    std::vector<std::pair<int, int>> ids;
     for (int u : g.coplanar_partners[t]) {
-      for (int x : g.triangle_points[u]) place(x);
+      for (int x : g.triangle_points[u]) ids.emplace_back(x, 1);
       for (int k = 0; k < 3; ++k)
-        for (int x : g.edge_points[g.triangle_edges[u][k]]) place(x);
-      for (const auto& s : g.triangle_segments[u])
-        if (locate(g.points, tri, plane, orientation, s[0]).kind != Location::Outside &&
-            locate(g.points, tri, plane, orientation, s[1]).kind != Location::Outside)
-          a.segments.push_back(s);
+        for (int x : g.edge_points[g.triangle_edges[u][k]]) ids.emplace_back(x, 1);
+      for (const auto& s : g.triangle_segments[u]) ids.insert(ids.end(), {{s[0], 0}, {s[1], 0}});
     }
+    std::sort(ids.begin(), ids.end(), [](const auto& l, const auto& r) {
+      return l.first != r.first ? l.first < r.first : l.second > r.second;  // a partner's point first
+    });
+    ids.erase(std::unique(ids.begin(), ids.end(), [](const auto& l, const auto& r) { return l.first == r.first; }),
+              ids.end());
+    std::vector<Location> where(ids.size());
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      const int x = ids[i].first;
+      // A box around the point disjoint from t's box: outside, with no predicate.
+      const tritri::BoxBounds b = tritri::box_bounds(g.points[x]);
+      bool apart = false;
+      for (int c = 0; c < 3; ++c) apart = apart || b[c].hi < lo[c] || b[c].lo > hi[c];
+      where[i] = apart ? Location::outside() : locate(g.points, tri, plane, orientation, x);
+      if (!ids[i].second) continue;
+      if (where[i].kind == Location::Interior)
+        a.inside.push_back(x);
+      else if (where[i].kind == Location::Edge)
+        a.on_edge.push_back({g.triangle_edges[t][where[i].id], x});
+    }
+    auto inside_closed = [&](int x) {
+      const auto it =
+          std::lower_bound(ids.begin(), ids.end(), x, [](const std::pair<int, int>& l, int r) { return l.first < r; });
+      return where[static_cast<std::size_t>(it - ids.begin())].kind != Location::Outside;
+    };
+    for (int u : g.coplanar_partners[t])
+      for (const auto& s : g.triangle_segments[u])
+        if (inside_closed(s[0]) && inside_closed(s[1])) a.segments.push_back(s);
   });
+  std::vector<int> edges;
   for (std::size_t t = 0; t < F.size(); ++t) {
-    for (int x : add[t].inside) g.triangle_points[t].push_back(x);
-    for (const auto& e : add[t].on_edge) g.edge_points[e[0]].push_back(e[1]);
-    for (const auto& s : add[t].segments) g.triangle_segments[t].push_back(s);
+    if (!add[t].inside.empty()) {
+      g.triangle_points[t].insert(g.triangle_points[t].end(), add[t].inside.begin(), add[t].inside.end());
+      sort_unique(g.triangle_points[t]);
+    }
+    for (const auto& e : add[t].on_edge) {
+      g.edge_points[e[0]].push_back(e[1]);
+      edges.push_back(e[0]);
+    }
+    if (!add[t].segments.empty()) {
+      g.triangle_segments[t].insert(g.triangle_segments[t].end(), add[t].segments.begin(), add[t].segments.end());
+      sort_unique(g.triangle_segments[t]);
+    }
   }
+  sort_unique(edges);
+  for (int e : edges) sort_unique(g.edge_points[e]);
 }
 
 }  // namespace
@@ -229,21 +259,28 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
     i = j;
   }
 
-  // 3. New points that coincide with an input vertex become that vertex.
-  std::vector<int> by_position(V.size());
-  std::iota(by_position.begin(), by_position.end(), 0);
-  std::sort(by_position.begin(), by_position.end(), [&](int a, int b) { return V[a] < V[b]; });
+  // 3. New points that coincide with an input vertex become that vertex: the vertices
+  // sorted in the same exact order, each new point looked up (grids put many vertices at
+  // exactly the x of a new point, where xyz order would need exact arithmetic).
   std::vector<int> final_id(keys.size(), -1);
   g.points.reserve(V.size());
   for (const Vec3& v : V) g.points.push_back(tritri::ImplicitPoint::explicit_point(v));
+  std::vector<int> by_position;
+  std::vector<tritri::XBounds> vb;
+  if (!keys.empty()) {
+    vb.resize(V.size());
+    tbb::parallel_for(std::size_t{0}, V.size(), [&](std::size_t v) { vb[v] = tritri::direction_bounds(g.points[v]); });
+    by_position.resize(V.size());
+    std::iota(by_position.begin(), by_position.end(), 0);
+    tbb::parallel_sort(by_position.begin(), by_position.end(), [&](int a, int b) {
+      const int c = tritri::compare_along_direction(g.points[a], vb[a], g.points[b], vb[b]);
+      return c != 0 ? c < 0 : a < b;  // (preprocessing merged equal vertices; deterministic anyway)
+    });
+  }
   std::vector<int> vertex_match(keys.size(), -1);
   tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
     if (representative[i] != static_cast<int>(i)) return;
-    const tritri::XBounds xi = tritri::x_bounds(lpis[i]);
-    auto compare_vertex = [&](int vid) {
-      const tritri::XBounds at{V[vid][0], V[vid][0]};
-      return tritri::compare_xyz_bounded(g.points[vid], at, lpis[i], xi);
-    };
+    auto compare_vertex = [&](int vid) { return tritri::compare_along_direction(g.points[vid], vb[vid], lpis[i], db[i]); };
     auto it = std::lower_bound(by_position.begin(), by_position.end(), 0,
                                [&](int vid, int) { return compare_vertex(vid) < 0; });
     if (it != by_position.end() && compare_vertex(*it) == 0) vertex_match[i] = *it;
@@ -302,10 +339,10 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
     }
   }
   for (auto& v : g.coplanar_partners) sort_unique(v);
-  share_coplanar(V, F, g);
   for (auto& v : g.edge_points) sort_unique(v);
   for (auto& v : g.triangle_points) sort_unique(v);
   for (auto& v : g.triangle_segments) sort_unique(v);
+  share_coplanar(V, F, g);  // keeps the lists sorted and unique
   sort_unique(g.segment_supports);
   std::vector<std::array<int, 2>> all_segments;
   for (const auto& v : g.triangle_segments) all_segments.insert(all_segments.end(), v.begin(), v.end());

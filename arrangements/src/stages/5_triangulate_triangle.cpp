@@ -11,6 +11,7 @@
 #include <tritri/double_kernel.h>
 #include <tritri/double_predicates.h>
 #include <tritri/implicit_predicates.h>
+#include <tritri/point_bounds.h>
 #include <tritri/projection.h>
 
 #include "support/auxiliary_point.h"
@@ -367,17 +368,23 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
   };
   const int c0 = add(tri[0]), c1 = add(tri[1]), c2 = add(tri[2]);
   lt.start(c0, c1, c2);
-  // Edge points split the boundary directly (no predicate): sorted along the edge by the
-  // exact lexicographic order (monotone along a line), each one splits the sub-edge
-  // between the previous one and the edge's end.
+  // Edge points split the boundary directly (no predicate): sorted along the edge by an
+  // exact order that is monotone along any line (tritri::compare_along_direction: a
+  // projection, ties by xyz; intervals settle it where xyz would meet exact ties on
+  // axis-parallel edges), each one splits the sub-edge between the previous one and the
+  // edge's end.
   for (int k = 0; k < 3; ++k) {
     std::vector<int> on_edge = g.edge_points[g.triangle_edges[t][k]];
     if (on_edge.empty()) continue;
-    std::sort(on_edge.begin(), on_edge.end(), [&](int x, int y) {
-      const int c = tritri::compare_xyz(g.points[x], g.points[y]);
-      return c != 0 ? c < 0 : x < y;
+    std::vector<std::pair<tritri::XBounds, int>> keyed(on_edge.size());
+    for (std::size_t i = 0; i < on_edge.size(); ++i) keyed[i] = {tritri::direction_bounds(g.points[on_edge[i]]), on_edge[i]};
+    std::sort(keyed.begin(), keyed.end(), [&](const auto& x, const auto& y) {
+      const int c = tritri::compare_along_direction(g.points[x.second], x.first, g.points[y.second], y.first);
+      return c != 0 ? c < 0 : x.second < y.second;
     });
-    if (tritri::compare_xyz(g.points[tri[k]], g.points[tri[(k + 1) % 3]]) > 0)
+    for (std::size_t i = 0; i < on_edge.size(); ++i) on_edge[i] = keyed[i].second;
+    const ImplicitPoint &from = g.points[tri[k]], &to = g.points[tri[(k + 1) % 3]];
+    if (tritri::compare_along_direction(from, tritri::direction_bounds(from), to, tritri::direction_bounds(to)) > 0)
       std::reverse(on_edge.begin(), on_edge.end());
     int prev = local_of.at(tri[k]);
     const int end = local_of.at(tri[(k + 1) % 3]);
@@ -397,6 +404,9 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
   const auto& segs = g.triangle_segments[t];
   std::vector<std::array<Vec3, 3>> support(segs.size());
   auto at = [&](int id) { return id >= 0 ? V[id] : auxiliary_point(V, soup.triangles[-1 - id]); };
+  // Many segments of t share a support plane (a partner's plane): each distinct plane is
+  // tested once (a coplanar partner's plane costs three exact zeros).
+  std::vector<std::pair<std::array<int, 3>, bool>> tested;
   for (std::size_t s = 0; s < segs.size(); ++s) {
     auto it = std::lower_bound(g.segment_supports.begin(), g.segment_supports.end(), segs[s],
                                [](const SegmentSupport& x, const std::array<int, 2>& e) { return x.ends < e; });
@@ -404,10 +414,14 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
     for (; !found && it != g.segment_supports.end() && it->ends == segs[s]; ++it)
       for (const auto& pl : it->planes) {
         const std::array<Vec3, 3> P = {at(pl[0]), at(pl[1]), at(pl[2])};
-        bool transverse = false;
-        for (int k = 0; k < 3 && !transverse; ++k)
-          transverse = tritri::orient3d(P[0], P[1], P[2], V[tri[k]]) != tritri::Sign::Zero;
-        if (transverse) {
+        auto known = std::find_if(tested.begin(), tested.end(), [&](const auto& e) { return e.first == pl; });
+        if (known == tested.end()) {
+          bool transverse = false;
+          for (int k = 0; k < 3 && !transverse; ++k)
+            transverse = tritri::orient3d(P[0], P[1], P[2], V[tri[k]]) != tritri::Sign::Zero;
+          known = tested.insert(tested.end(), {pl, transverse});
+        }
+        if (known->second) {
           support[s] = P;
           found = true;
           break;
@@ -440,17 +454,40 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
     const Tri& u = soup.triangles[partners[q]];
     partner_sign[q] = tritri::to_int(tritri::orient2d(V[u[0]], V[u[1]], V[u[2]], plane));
   }
+  // Whether local vertex v lies in partner q's closed triangle, computed once per pair
+  // (a vertex has several local triangles): the filter on the vertex's certified box
+  // first, side_of_line for the edges it leaves undecided.
+  std::vector<std::int8_t> in_partner(partners.size() * lt.pts.size(), -1);
+  std::vector<tritri::BoxBounds> box(lt.pts.size());
+  std::vector<char> has_box(lt.pts.size(), 0);
+  auto in_closed_partner = [&](std::size_t q, int v) {
+    std::int8_t& known = in_partner[q * lt.pts.size() + static_cast<std::size_t>(v)];
+    if (known >= 0) return known == 1;
+    if (!has_box[v]) {
+      box[v] = tritri::box_bounds(lt.pts[v]);
+      has_box[v] = 1;
+    }
+    const Tri& u = soup.triangles[partners[q]];
+    int side[3];
+    bool inside = true;
+    for (int e = 0; e < 3 && inside; ++e) {
+      side[e] = tritri::orient2d_bounded(V[u[e]], V[u[(e + 1) % 3]], box[v], plane);
+      inside = side[e] == tritri::kUndecided || partner_sign[q] * side[e] >= 0;
+    }
+    for (int e = 0; e < 3 && inside; ++e)
+      if (side[e] == tritri::kUndecided)
+        inside = partner_sign[q] * side_of_line(g.points[u[e]], g.points[u[(e + 1) % 3]], lt.pts[v], plane,
+                                                &g.points[u[(e + 2) % 3]]) >=
+                 0;
+    known = inside ? 1 : 0;
+    return inside;
+  };
   std::map<std::vector<int>, int> cover_index;
   for (const LocalTriangle& T : lt.tris) {
     std::vector<int> cover;
     for (std::size_t q = 0; q < partners.size(); ++q) {
-      const Tri& u = soup.triangles[partners[q]];
       bool inside = true;
-      for (int k = 0; k < 3 && inside; ++k)
-        for (int e = 0; e < 3 && inside; ++e)
-          inside = partner_sign[q] * side_of_line(g.points[u[e]], g.points[u[(e + 1) % 3]], lt.pts[T.v[k]], plane,
-                                                  &g.points[u[(e + 2) % 3]]) >=
-                   0;
+      for (int k = 0; k < 3 && inside; ++k) inside = in_closed_partner(q, T.v[k]);
       if (inside) cover.push_back(partners[q]);
     }
     if (!cover.empty() && cover.front() < t) continue;  // emitted by the smallest covering triangle

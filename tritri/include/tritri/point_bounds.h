@@ -7,6 +7,11 @@
 // many implicit points (deduplication), where most comparisons are between points far
 // apart: the bounds are computed once per point instead of per comparison.
 //
+// box_bounds(p), orient2d_bounded(a, b, box, plane): a certified box around a point, and
+// the sign of orient2d(a, b, x) for explicit a, b and every x in the box when a filter
+// can tell (locating many implicit points in a triangle: most are decided without the
+// point's filtered or exact predicate).
+//
 // direction_bounds(p), compare_along_direction(p, bp, q, bq): an interval for kSortDirection . p and an exact total
 // order along a fixed direction, for deduplication by sorting (coincident points compare equal): structured inputs have
 // many distinct points with exactly equal x, which compare_xyz can only separate with exact arithmetic (and caches it
@@ -29,6 +34,7 @@
 #include <utility>
 #include <limits>
 
+#include "tritri/double_predicates.h"
 #include "tritri/implicit_point.h"
 #include "tritri/implicit_predicates.h"
 
@@ -68,6 +74,59 @@ inline XBounds x_bounds(const ImplicitPoint& p) {
   const auto& d = ImplicitPoint::rounding_depth(p.kind());
   return detail::quotient_bounds(f.x.v, f.x.perm * (d.x.depth * detail::kFilterGamma), f.w.v,
                                  f.w.perm * (d.w.depth * detail::kFilterGamma));
+}
+
+// A box that certainly contains p: x_bounds for each coordinate (explicit points: the
+// point itself). Infinite ends where the filtered coordinates cannot bound the point.
+using BoxBounds = std::array<XBounds, 3>;
+
+inline BoxBounds box_bounds(const ImplicitPoint& p) {
+  if (p.is_explicit()) {
+    const auto& c = p.approx();
+    return {XBounds{c[0], c[0]}, XBounds{c[1], c[1]}, XBounds{c[2], c[2]}};
+  }
+  const auto& f = p.filtered();
+  const auto& d = ImplicitPoint::rounding_depth(p.kind());
+  const double ew = f.w.perm * (d.w.depth * detail::kFilterGamma);
+  return {detail::quotient_bounds(f.x.v, f.x.perm * (d.x.depth * detail::kFilterGamma), f.w.v, ew),
+          detail::quotient_bounds(f.y.v, f.y.perm * (d.y.depth * detail::kFilterGamma), f.w.v, ew),
+          detail::quotient_bounds(f.z.v, f.z.perm * (d.z.depth * detail::kFilterGamma), f.w.v, ew)};
+}
+
+// The sign of orient2d(a, b, x) in `plane` (tritri::orient2d's convention) that holds for
+// every x in `box`, when a filter can certify it; kUndecided otherwise (then ask
+// tritri::orient2d on the point itself). Never certifies 0 unless the box is a point.
+// Why it holds: orient2d(a, b, x) = orient2d(a, b, c) + u_i (x_j - c_j) - u_j (x_i - c_i)
+// with u = b - a and c the box's centre, |x_k - c_k| <= hi_k - lo_k. The first term is
+// decided by double_predicates' orient2d filter (bound kOrient2dBound * mx * my, same
+// ranges); the second is at most |u_i| r_j + |u_j| r_i, computed from rounded u and r
+// with a relative margin of 2^-45 (each of the five roundings is at most 2^-53) plus
+// 2^-1060 for underflow. Cost: about 20 flops.
+inline constexpr int kUndecided = 2;
+
+inline int orient2d_bounded(const std::array<double, 3>& a, const std::array<double, 3>& b, const BoxBounds& box,
+                            Plane plane) noexcept {
+  const int i = plane == Plane::XY ? 0 : (plane == Plane::YZ ? 1 : 2);
+  const int j = (i + 1) % 3;
+  const double li = box[i].lo, hi_ = box[i].hi, lj = box[j].lo, hj = box[j].hi;
+  if (!(std::isfinite(li) && std::isfinite(hi_) && std::isfinite(lj) && std::isfinite(hj))) return kUndecided;
+  const double ri = (hi_ - li) * (1 + 0x1p-50), rj = (hj - lj) * (1 + 0x1p-50);
+  const double ci = li + (hi_ - li) * 0.5, cj = lj + (hj - lj) * 0.5;
+  if (!(ci >= li && ci <= hi_ && cj >= lj && cj <= hj) || !std::isfinite(ri) || !std::isfinite(rj))
+    return kUndecided;
+  const double ux = b[i] - a[i], uy = b[j] - a[j], vx = ci - a[i], vy = cj - a[j];
+  const double mx = detail::max_abs(ux, vx), my = detail::max_abs(uy, vy);
+  if (!detail::in_filter_range(mx) || !detail::in_filter_range(my)) {
+    if (ri == 0 && rj == 0) return to_int(orient2d(a[i], a[j], b[i], b[j], ci, cj));
+    return kUndecided;
+  }
+  const double det = ux * vy - uy * vx;
+  const double spread = (std::fabs(ux) * rj + std::fabs(uy) * ri) * (1 + 0x1p-45) + 0x1p-1060;
+  const double bound = detail::kOrient2dBound * mx * my + spread;
+  if (det > bound) return 1;
+  if (det < -bound) return -1;
+  if (ri == 0 && rj == 0) return to_int(orient2d(a[i], a[j], b[i], b[j], ci, cj));
+  return kUndecided;
 }
 
 // A sorting direction with no simple relation to the axes: distinct points of structured
