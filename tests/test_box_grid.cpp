@@ -7,9 +7,11 @@
 //   boxes, many touching exactly), integer lattices scaled by 2^k, soups far from the origin
 //   (differences of coordinates exact or not), negative coordinates, axis-aligned flat
 //   triangles, tilings of touching cubes whose faces lie on cell boundaries;
-// - it declines (returns false, having visited nothing) when a few huge or long triangles
-//   cross many small ones in all directions, and overlapping_triangle_pairs (then CGAL's
-//   segment tree) still equals brute force there, for threads 1, 2 and 0;
+// - it accepts small triangles crossed by long or huge ones in all directions (those sit on
+//   coarse levels of its hierarchy);
+// - it declines (returns false, having visited nothing) when most boxes overlap most others,
+//   and overlapping_triangle_pairs (then CGAL's segment tree) still equals brute force
+//   there, for threads 1, 2 and 0;
 // - edge cases (0, 1, 2 boxes, identical boxes, a point-like cluster plus one far triangle,
 //   point triangles, lattices scaled into the subnormals, dense tilings of cubes): accepted
 //   or declined, the answer is exact. overlapping_triangle_pairs equals brute force on every
@@ -297,10 +299,25 @@ TEST(BoxGrid, TouchingCubesOnCellBoundaries) {
     }
 }
 
-TEST(BoxGrid, DeclinesWhenLongTrianglesCrossManySmallOnes) {
+// Long triangles sit on coarse levels of the hierarchy: accepted, and exact.
+TEST(BoxGrid, AcceptsLongTrianglesCrossingManySmallOnes) {
   std::mt19937_64 rng(seed_for(704));
   for (int n : {std::max(200, scaled(300)), scaled(2000), scaled(4000)})  // small ones the majority
-    for (int rounds : {1, 2, 4}) check(crossed(rng, n, rounds, "crossed x" + std::to_string(rounds)), Expect::kDecline);
+    for (int rounds : {1, 2, 4}) check(crossed(rng, n, rounds, "crossed x" + std::to_string(rounds)), Expect::kAccept);
+}
+
+// Most boxes overlapping most others (big triangles jittered over one region): the pairwise
+// tests would be quadratic, the grid declines, and the segment tree is exact.
+TEST(BoxGrid, DeclinesWhenMostBoxesOverlapEachOther) {
+  std::mt19937_64 rng(seed_for(706));
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int n : {2000, std::max(2000, scaled(5000))}) {  // n^2 / 2 tests > 40 n log2 n
+    Soup s{"overlapping", {}, {}};
+    for (int t = 0; t < n; ++t)
+      add_triangle(s, {unit(rng), unit(rng), unit(rng)}, {10 + unit(rng), unit(rng), 10 * unit(rng)},
+                   {unit(rng), 10 + unit(rng), 10 * unit(rng)});
+    check(s, Expect::kDecline);
+  }
 }
 
 // Soups between uniform and crossed: accepted or not, exact.

@@ -19,8 +19,8 @@
 // input validation).
 // Exactness: the boxes are the exact minima and maxima of the corners' coordinates, so no
 // pair that touches is missed.
-// Method: a uniform grid where the boxes are of similar size (tritri/detail/box_grid.h);
-// otherwise CGAL's box_intersection_d segment tree (closed boxes). In parallel the boxes are
+// Method: a hierarchy of uniform grids (tritri/detail/box_grid.h) unless its cells would be
+// crowded; otherwise CGAL's box_intersection_d segment tree (closed boxes). In parallel the boxes are
 // sorted by xmin and cut into chunks, one task per chunk; below ~4000 triangles, or with
 // one thread, one sequential call. Groups are single boxes in that search, expanded
 // through a Boost.Geometry R-tree of their triangles' boxes.
