@@ -141,13 +141,17 @@ bool coplanar_meet_only_in_shared(const K& k, const std::array<typename K::Point
          separates(b2, b1, a1, a2);
 }
 
-// coplanar_separated(k, a, b): true when two coplanar triangles (same preconditions, no
-// shared vertices needed) are disjoint: some edge line of one has all three corners of
-// the other strictly on its far side. For disjoint convex polygons such an edge always
-// exists (separating axis theorem), so only touching or overlapping pairs are left.
+// separated_in_projection(k, a, b): true when the projections of triangles a and b onto
+// the axis plane where a is best conditioned are disjoint: some edge line of one has all
+// three corners of the other strictly on its far side (in that plane). Disjoint
+// projections of closed triangles mean disjoint triangles, for any pair (a proper; no
+// shared vertices needed, none possible when true). For two coplanar triangles the
+// converse holds too (separating axis theorem for convex polygons: only touching or
+// overlapping pairs are left); for others it is a cheap sufficient test, which settles
+// most box pairs that straddle each other's planes without meeting.
 // Cost: up to 3 + 2 * 3 * 4 orient2d, usually a few.
 template <Kernel K>
-bool coplanar_separated(const K& k, const std::array<typename K::Point, 3>& a,
+bool separated_in_projection(const K& k, const std::array<typename K::Point, 3>& a,
                         const std::array<typename K::Point, 3>& b) {
   const auto [plane, orientation] = projection(k, a[0], a[1], a[2], dominant_plane(a[0], a[1], a[2]));
   if (orientation == 0) return false;
