@@ -34,7 +34,7 @@ bool classify_one(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>
 template <class K>
 void classify_range(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F,
                     std::span<const tritri::PlaneFilter> planes, const std::vector<std::pair<int, int>>& pairs,
-                    std::size_t begin, std::size_t end, Classifier classifier, std::vector<PairIntersection>& found) {
+                    std::size_t begin, std::size_t end, Classifier classifier, PairRecordChunk& found) {
   PairIntersection record;
   for (std::size_t i = begin; i < end; ++i) {
     const auto [ta, tb] = pairs[i];
@@ -51,6 +51,7 @@ void classify_range(const K& k, const std::vector<Vec3>& V, const std::vector<Tr
     hit = classify_one(k, V, F, ta, tb, classifier, record);
     if (hit) found.push_back(record);
   }
+  found.shrink_to_fit();
 }
 
 }  // namespace
@@ -63,9 +64,8 @@ PairRecords classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F
   constexpr std::size_t chunk = 2048;
   // Counting: one PredicateCounts per chunk (one worker at a time), summed at the end.
   std::vector<tritri::PredicateCounts> chunk_counts(counts ? (pairs.size() + chunk - 1) / chunk : 0);
-  PairRecords all(tritri::detail::collect_chunks_in_order<PairIntersection>(
-      pairs.size(), chunk,
-      [&](std::size_t c, std::size_t begin, std::size_t end, std::vector<PairIntersection>& found) {
+  PairRecords all(tritri::detail::collect_chunks_in_order<PairRecordChunk>(
+      pairs.size(), chunk, [&](std::size_t c, std::size_t begin, std::size_t end, PairRecordChunk& found) {
         if (counts)
           classify_range(tritri::CountingKernel<tritri::DoubleKernel>(chunk_counts[c]), V, F, {}, pairs, begin, end,
                          classifier, found);

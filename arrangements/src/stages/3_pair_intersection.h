@@ -54,13 +54,56 @@ struct PairIntersection {
   tritri::StaticVector<tritri::Segment, 6> segments;  // indices into points
 };
 
+// The records of one chunk of pairs, stored compactly: a 20-byte head per record and its
+// points and segments in two shared arrays (a PairIntersection reserves room for 6 of
+// each, 216 bytes, where most pairs have 2 points and 1 segment). Arrays are trimmed to
+// size when the chunk is done. Reading gives the PairIntersection back, by value.
+class PairRecordChunk {
+ public:
+  void push_back(const PairIntersection& r) {
+    heads_.push_back({{r.tri[0], r.tri[1]}, static_cast<std::uint32_t>(points_.size()),
+                      static_cast<std::uint32_t>(segments_.size()), static_cast<std::uint8_t>(r.points.size()),
+                      static_cast<std::uint8_t>(r.segments.size()), r.coplanar});
+    points_.insert(points_.end(), r.points.begin(), r.points.end());
+    segments_.insert(segments_.end(), r.segments.begin(), r.segments.end());
+  }
+  void shrink_to_fit() {
+    heads_.shrink_to_fit();
+    points_.shrink_to_fit();
+    segments_.shrink_to_fit();
+  }
+  std::size_t size() const noexcept { return heads_.size(); }
+  PairIntersection operator[](std::size_t i) const {
+    const Head& h = heads_[i];
+    PairIntersection r;
+    r.tri[0] = h.tri[0];
+    r.tri[1] = h.tri[1];
+    r.coplanar = h.coplanar;
+    for (std::uint32_t k = 0; k < h.points; ++k) r.points.push_back(points_[h.first_point + k]);
+    for (std::uint32_t k = 0; k < h.segments; ++k) r.segments.push_back(segments_[h.first_segment + k]);
+    return r;
+  }
+
+ private:
+  struct Head {
+    int tri[2];
+    std::uint32_t first_point, first_segment;  // a chunk holds a few thousand records
+    std::uint8_t points, segments;
+    bool coplanar;
+  };
+  std::vector<Head> heads_;
+  std::vector<PairPoint> points_;
+  std::vector<tritri::Segment> segments_;
+};
+
 // The records of a classification, in pair order, held in the chunks its parallel loop
 // filled (tritri::detail::collect_chunks_in_order): concatenating them would double the
-// peak memory when there are millions. Iterates like one sequence.
+// peak memory when there are millions. Iterates like one sequence of PairIntersection
+// (given by value: read each once, in a range-for).
 class PairRecords {
  public:
   PairRecords() = default;
-  explicit PairRecords(std::vector<std::vector<PairIntersection>> chunks) : chunks_(std::move(chunks)) {
+  explicit PairRecords(std::vector<PairRecordChunk> chunks) : chunks_(std::move(chunks)) {
     for (const auto& c : chunks_) size_ += c.size();
   }
 
@@ -69,11 +112,8 @@ class PairRecords {
     using value_type = PairIntersection;
     using difference_type = std::ptrdiff_t;
     const_iterator() = default;
-    const_iterator(const std::vector<std::vector<PairIntersection>>* c, std::size_t chunk) : c_(c), chunk_(chunk) {
-      skip_empty();
-    }
-    const PairIntersection& operator*() const { return (*c_)[chunk_][pos_]; }
-    const PairIntersection* operator->() const { return &(*c_)[chunk_][pos_]; }
+    const_iterator(const std::vector<PairRecordChunk>* c, std::size_t chunk) : c_(c), chunk_(chunk) { skip_empty(); }
+    PairIntersection operator*() const { return (*c_)[chunk_][pos_]; }
     const_iterator& operator++() {
       ++pos_;
       skip_empty();
@@ -90,7 +130,7 @@ class PairRecords {
         pos_ = 0;
       }
     }
-    const std::vector<std::vector<PairIntersection>>* c_ = nullptr;
+    const std::vector<PairRecordChunk>* c_ = nullptr;
     std::size_t chunk_ = 0, pos_ = 0;
   };
 
@@ -99,7 +139,7 @@ class PairRecords {
   std::size_t size() const noexcept { return size_; }
 
  private:
-  std::vector<std::vector<PairIntersection>> chunks_;
+  std::vector<PairRecordChunk> chunks_;
   std::size_t size_ = 0;
 };
 

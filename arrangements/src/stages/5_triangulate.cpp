@@ -117,6 +117,13 @@ OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& g, int
     out.source.push_back(soup.source[t]);
     out.label_set.push_back(label_set);
   };
+  // Sized once: growth by doubling would hold the old and the new arrays at the peak.
+  std::size_t out_triangles = 0;
+  for (std::size_t t = 0; t < nF; ++t) out_triangles += busy[t] ? pieces[t].triangles.size() : 1;
+  out.triangles.reserve(out_triangles);
+  out.source.reserve(out_triangles);
+  out.label_set.reserve(out_triangles);
+  out.vertices.reserve(g.points.size() + new_tpis.size());
   out.label_sets = soup.label_sets;
   std::map<LabelSet, int> label_index;
   for (std::size_t i = 0; i < out.label_sets.size(); ++i) label_index.emplace(out.label_sets[i], static_cast<int>(i));

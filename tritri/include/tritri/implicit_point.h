@@ -34,6 +34,8 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
+#include <algorithm>
 #include <stdexcept>
 
 #include "tritri/detail/filtered_value.h"
@@ -119,8 +121,9 @@ class ImplicitPoint {
 
   // Rounding depths of the cached filtered coordinates of a point of this kind.
   static const detail::Homogeneous<detail::RoundingDepth>& rounding_depth(Kind kind) {
-    static const auto lpi = evaluate<detail::RoundingDepth>(Kind::LPI, {});
-    static const auto tpi = evaluate<detail::RoundingDepth>(Kind::TPI, {});
+    static const std::array<Coords, 9> none{};  // the depths do not depend on the values
+    static const auto lpi = evaluate<detail::RoundingDepth>(Kind::LPI, none.data());
+    static const auto tpi = evaluate<detail::RoundingDepth>(Kind::TPI, none.data());
     static const detail::Homogeneous<detail::RoundingDepth> exact{0.0, 0.0, 0.0, 0.0};
     return kind == Kind::LPI ? lpi : (kind == Kind::TPI ? tpi : exact);
   }
@@ -134,9 +137,9 @@ class ImplicitPoint {
       const auto d = detail::difference_leaves<T>(xyz_, o);
       return {d[0], d[1], d[2], T(1.0)};
     }
-    const auto& in = rep_->in;
+    const Coords* in = rep_->in;
     if (rep_->kind == Kind::LPI) return detail::lpi_offset<T>(in[0], in[1], in[2], in[3], in[4], o);
-    return detail::tpi_offset<T>(in, o);
+    return detail::tpi_offset<T>(std::span<const Coords, 9>(in, 9), o);
   }
 
   // Homogeneous coordinates evaluated with number type T (explicit: (x, y, z, 1)).
@@ -147,14 +150,20 @@ class ImplicitPoint {
   }
 
  private:
+  // The shared representation; its defining points follow it in a block sized for the
+  // kind (5 for an LPI, 9 for a TPI: pipelines hold millions of LPIs).
   struct Rep {
     Kind kind;
-    std::array<Coords, 9> in;
+    const Coords* in;  // the defining points, in the block below
     detail::Homogeneous<detail::FilteredValue> filtered;
     int w_sign;
     // Exact homogeneous coordinates, computed on first use by the exact stage only.
     mutable std::once_flag exact_once;
     mutable std::unique_ptr<const detail::Homogeneous<CGAL::Mpzf>> exact;
+  };
+  template <int N>
+  struct RepWith : Rep {
+    std::array<Coords, N> storage;
   };
 
   static const Coords& coords(const Coords& c) { return c; }
@@ -164,21 +173,31 @@ class ImplicitPoint {
     return p.xyz_;
   }
 
+  // `in`: 5 points for an LPI, 9 for a TPI (none when kind is Explicit and T only serves
+  // rounding_depth, which reads no input).
   template <class T>
-  static detail::Homogeneous<T> evaluate(Kind kind, const std::array<Coords, 9>& in) {
+  static detail::Homogeneous<T> evaluate(Kind kind, const Coords* in) {
     if (kind == Kind::LPI) return detail::lpi_homogeneous<T>(in[0], in[1], in[2], in[3], in[4]);
-    return detail::tpi_homogeneous<T>(in);
+    return detail::tpi_homogeneous<T>(std::span<const Coords, 9>(in, 9));
   }
 
   static std::optional<ImplicitPoint> make(std::initializer_list<Coords> list, Kind kind) {
-    auto rep = std::make_shared<Rep>();
-    rep->kind = kind;
-    int i = 0;
-    for (const Coords& c : list) {
+    for (const Coords& c : list)
       if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
         throw std::invalid_argument("tritri::ImplicitPoint: non-finite coordinate");
-      rep->in[i++] = c;
+    std::shared_ptr<Rep> rep;
+    if (kind == Kind::LPI) {
+      auto r = std::make_shared<RepWith<5>>();
+      std::copy(list.begin(), list.end(), r->storage.begin());
+      r->in = r->storage.data();
+      rep = std::move(r);
+    } else {
+      auto r = std::make_shared<RepWith<9>>();
+      std::copy(list.begin(), list.end(), r->storage.begin());
+      r->in = r->storage.data();
+      rep = std::move(r);
     }
+    rep->kind = kind;
     rep->filtered = evaluate<detail::FilteredValue>(kind, rep->in);
     // W = 0 exactly means the point is undefined: decide its sign exactly.
     int s = rep->filtered.w.certified_sign(rounding_depth(kind).w.depth);

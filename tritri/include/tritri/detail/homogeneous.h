@@ -14,6 +14,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 
 namespace tritri::detail {
 
@@ -49,7 +50,7 @@ Homogeneous<T> lpi_homogeneous(const Coords& p, const Coords& q, const Coords& r
 }
 
 template <class T>
-Homogeneous<T> tpi_homogeneous(const std::array<Coords, 9>& v) {
+Homogeneous<T> tpi_homogeneous(std::span<const Coords, 9> v) {
   std::array<T, 3> n[3];
   T d[3];
   for (int i = 0; i < 3; ++i) {

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 
 #include "tritri/detail/filtered_value.h"
 #include "tritri/detail/homogeneous.h"
@@ -57,7 +58,7 @@ Homogeneous<T> lpi_offset(const Coords& p, const Coords& q, const Coords& r, con
 // d_i = n_i . (v[3i] - o), W (x - o) = d_0 n_1 x n_2 + d_1 n_2 x n_0 + d_2 n_0 x n_1,
 // W = n_0 . (n_1 x n_2).
 template <class T>
-Homogeneous<T> tpi_offset(const std::array<Coords, 9>& v, const Coords& o) {
+Homogeneous<T> tpi_offset(std::span<const Coords, 9> v, const Coords& o) {
   std::array<T, 3> n[3];
   T d[3];
   for (int i = 0; i < 3; ++i) {

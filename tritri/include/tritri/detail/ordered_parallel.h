@@ -18,12 +18,13 @@
 
 namespace tritri::detail {
 
-// The same loop, the per-chunk vectors returned as they are (no concatenated copy: at
-// millions of results that copy doubles the peak memory); in order, chunk by chunk.
-template <class T, class Visit>
-std::vector<std::vector<T>> collect_chunks_in_order(std::size_t n, std::size_t chunk, const Visit& visit) {
+// The same loop, the per-chunk containers (Chunk: std::vector<T>, or any default-
+// constructible container the visitor fills) returned as they are (no concatenated copy:
+// at millions of results that copy doubles the peak memory); in order, chunk by chunk.
+template <class Chunk, class Visit>
+std::vector<Chunk> collect_chunks_in_order(std::size_t n, std::size_t chunk, const Visit& visit) {
   const std::size_t chunks = (n + chunk - 1) / chunk;
-  std::vector<std::vector<T>> found(chunks);
+  std::vector<Chunk> found(chunks);
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
     const std::size_t begin = c * chunk, end = begin + chunk < n ? begin + chunk : n;
     visit(c, begin, end, found[c]);
@@ -33,7 +34,7 @@ std::vector<std::vector<T>> collect_chunks_in_order(std::size_t n, std::size_t c
 
 template <class T, class Visit>
 std::vector<T> collect_in_order(std::size_t n, std::size_t chunk, const Visit& visit) {
-  std::vector<std::vector<T>> found = collect_chunks_in_order<T>(n, chunk, visit);
+  std::vector<std::vector<T>> found = collect_chunks_in_order<std::vector<T>>(n, chunk, visit);
   std::size_t total = 0;
   for (const auto& f : found) total += f.size();
   std::vector<T> out;
