@@ -14,7 +14,7 @@
 //   2. tritri::classify with a PlaneCachedKernel, whose planes are registered for the very
 //      point objects classified, gives exactly DoubleKernel's Result (points, segments,
 //      coplanar, degenerate), and really goes through the cached planes.
-//   3. meet_only_in_shared, separated_by_plane, coplanar_meet_only_in_shared,
+//   3. meet_only_in_shared, separated_by_plane, meet_in_shared_in_projection,
 //      separated_in_projection and touches_only_in_shared, called only where their preconditions
 //      hold, answer true only when classify reports no point or only VA_ON_VB points at
 //      vertex pairs shared by index (the "separated" ones: no point at all); each fires often
@@ -489,9 +489,9 @@ std::string describe(const Neighbours& nb, const tritri::Result& r) {
   return os.str();
 }
 
-enum EarlyOut { kMeet, kSeparated, kCoplanarMeet, kProjectionSeparated, kTouches, kEarlyOuts };
+enum EarlyOut { kMeet, kSeparated, kProjectionMeet, kProjectionSeparated, kTouches, kEarlyOuts };
 constexpr const char* kEarlyOutNames[kEarlyOuts] = {"meet_only_in_shared", "separated_by_plane",
-                                                    "coplanar_meet_only_in_shared", "separated_in_projection",
+                                                    "meet_in_shared_in_projection", "separated_in_projection",
                                                     "touches_only_in_shared"};
 
 TEST(SharedVertexEarlyOuts, AnswerTrueOnlyWhenClassifyReportsNothingButSharedVertices) {
@@ -518,7 +518,7 @@ TEST(SharedVertexEarlyOuts, AnswerTrueOnlyWhenClassifyReportsNothingButSharedVer
     // A repeated index (degenerate; ia = {0, 1, 2}, ib = {0, 0, 5} once read b[3]): false.
     if (tritri::detail::repeats_an_index(nb.ia) || tritri::detail::repeats_an_index(nb.ib)) {
       ASSERT_FALSE(tritri::meet_only_in_shared(k, a, nb.ia, b, nb.ib) ||
-                   tritri::coplanar_meet_only_in_shared(k, a, nb.ia, b, nb.ib));
+                   tritri::meet_in_shared_in_projection(k, a, nb.ia, b, nb.ib));
       ASSERT_FALSE(tritri::touches_only_in_shared(k, a, nb.ia, b, nb.ib, sb));
       continue;
     }
@@ -556,11 +556,9 @@ TEST(SharedVertexEarlyOuts, AnswerTrueOnlyWhenClassifyReportsNothingButSharedVer
     auto side = [&](int t, int c) { return t == 0 ? sb[c] : sa[c]; };
     check(kMeet, meet, sound, nb, r);
     check(kSeparated, tritri::separated_by_plane(side), empty, nb, r);
-    if (sb[0] == Sign::Zero && sb[1] == Sign::Zero && sb[2] == Sign::Zero) {
-      ++coplanar;
-      check(kCoplanarMeet, tritri::coplanar_meet_only_in_shared(k, a, nb.ia, b, nb.ib), sound, nb, r);
-      check(kCoplanarMeet, tritri::coplanar_meet_only_in_shared(k, b, nb.ib, a, nb.ia), sound, nb, r);
-    }
+    coplanar += sb[0] == Sign::Zero && sb[1] == Sign::Zero && sb[2] == Sign::Zero;
+    check(kProjectionMeet, tritri::meet_in_shared_in_projection(k, a, nb.ia, b, nb.ib), sound, nb, r);  // any pair
+    check(kProjectionMeet, tritri::meet_in_shared_in_projection(k, b, nb.ib, a, nb.ia), sound, nb, r);
     check(kProjectionSeparated, tritri::separated_in_projection(k, a, b), empty, nb, r);  // any pair, coplanar or not
     check(kProjectionSeparated, tritri::separated_in_projection(k, b, a), empty, nb, r);
     // touches_only_in_shared, and how often it answers through the projection (its zero
@@ -588,7 +586,8 @@ TEST(SharedVertexEarlyOuts, AnswerTrueOnlyWhenClassifyReportsNothingButSharedVer
   // Each early-out really fires (the test would notice one becoming trivially false).
   EXPECT_GT(fired[kMeet], checked / 10);
   EXPECT_GT(fired[kSeparated], checked / 10);
-  EXPECT_GT(fired[kCoplanarMeet], coplanar / 20);
+  EXPECT_GT(fired[kProjectionMeet], coplanar / 20);
+  EXPECT_GT(fired[kProjectionMeet], checked / 10);
   EXPECT_GT(fired[kProjectionSeparated], checked / 20);
   EXPECT_GT(fired[kTouches], checked / 50);
   EXPECT_GT(touches_projected, checked / 200);

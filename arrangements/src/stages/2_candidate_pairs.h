@@ -22,13 +22,14 @@
 //     tritri::separated_by_plane, 2 to 6 plane signs, the first test of every classifier;
 //   - coplanar pairs (every free corner of one in the other's plane): neighbours that
 //     meet only in what they share, and disjoint pairs, by orient2d in a projection
-//     (tritri::coplanar_meet_only_in_shared, tritri::separated_in_projection); flat CAD faces
+//     (tritri::meet_in_shared_in_projection, tritri::separated_in_projection); flat CAD faces
 //     give many of these;
 //   - a triangle touching the other's plane at a vertex or edge that misses the other
 //     (tritri::touches_only_in_shared);
-//   - pairs without shared vertices whose projections onto an axis plane are disjoint
-//     (tritri::separated_in_projection): box pairs that straddle each other's planes
-//     without meeting, common among long CAD triangles.
+//   - pairs that straddle each other's planes but whose projections onto an axis plane
+//     are disjoint, or meet only in what the two share (tritri::separated_in_projection,
+//     tritri::meet_in_shared_in_projection): long CAD triangles, vertex neighbours around
+//     saddle vertices.
 // Either way the classifiers would report nothing for the pair, so dropping it here
 // changes no result. Plane signs come from one tritri::PlaneFilter per triangle
 // (tritri/plane_filter.h: exact; decisive for slivers) with orient3d as the fallback.

@@ -98,22 +98,25 @@ bool separated_by_plane(Side&& side) {
   return false;
 }
 
-// The coplanar cases, which meet_only_in_shared leaves open. Preconditions: a and b are
-// proper triangles in one plane (every corner of b has orient3d 0 against plane(a)),
-// equal indices name equal points. All tests run in a projection where a is not
-// degenerate (tritri::projection); it maps the common plane one to one, so b is proper
-// there too, and disjointness in it is disjointness in 3D.
+// Tests in a projection, for what meet_only_in_shared leaves open: coplanar pairs, and
+// pairs that straddle each other's planes. Preconditions: a and b proper triangles, equal
+// indices name equal points. All tests run in a projection where a is not degenerate
+// (tritri::projection); it maps a one to one, so when the projections of a and b meet only
+// in the projection of a set S of a's points, a and b meet only in S (a common point
+// projects into both projections; a has one point over each point of its projection).
 //
-// coplanar_meet_only_in_shared(k, a, ia, b, ib): true when the two meet exactly in what
-// they share. Shared edge uv: the apexes lie strictly on opposite sides of line uv; each
-// triangle meets that line only in uv. Shared vertex u: one of the four edge lines at u
-// has the other triangle's two free corners strictly on the far side (the side without the
-// third corner of its own triangle); that triangle then meets the line only in u, and the
-// owner lies in the closed near side. Sufficient, not necessary: false means "classify".
+// meet_in_shared_in_projection(k, a, ia, b, ib): true when the two meet exactly in what
+// they share. Shared edge uv: the apexes lie strictly on opposite sides of line uv; the
+// projections then meet only in segment uv. Shared vertex u: one of the four edge lines at
+// u has the other triangle's two free corners strictly on the far side (the side without
+// the third corner of its own triangle); that triangle's projection then meets the line
+// only in u, and the owner's lies in the closed near side. For coplanar pairs this is the
+// usual 2D argument; for others it is sufficient too (by the projection argument above).
+// Sufficient, not necessary: false means "classify".
 // Cost: 2 orient2d (edge), up to 9 (vertex), plus the projection (1 to 3).
 template <Kernel K>
-bool coplanar_meet_only_in_shared(const K& k, const std::array<typename K::Point, 3>& a, const std::array<int, 3>& ia,
-                                  const std::array<typename K::Point, 3>& b, const std::array<int, 3>& ib) {
+bool meet_in_shared_in_projection(const K& k, const std::array<typename K::Point, 3>& a, const std::array<int, 3>& ia,
+                                   const std::array<typename K::Point, 3>& b, const std::array<int, 3>& ib) {
   if (detail::repeats_an_index(ia) || detail::repeats_an_index(ib)) return false;
   int in_b[3];
   const int shared = detail::shared_corners(ia, ib, in_b);
