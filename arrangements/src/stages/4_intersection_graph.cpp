@@ -24,21 +24,32 @@ void sort_unique(std::vector<T>& v) {
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
 
+// Unique edges, numbered in lexicographic order of (smaller id, larger id): a counting
+// sort by the smaller vertex id, then each vertex's few half-edges sorted (linear time;
+// the same order as sorting all (v0, v1, triangle * 3 + k) triples).
 void build_edges(const std::vector<Tri>& F, IntersectionGraph& g) {
-  std::vector<std::array<int, 3>> half;  // (v0, v1, triangle * 3 + k) with v0 < v1
-  half.reserve(F.size() * 3);
-  for (std::size_t t = 0; t < F.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      int a = F[t][k], b = F[t][(k + 1) % 3];
-      if (a > b) std::swap(a, b);
-      half.push_back({a, b, static_cast<int>(t * 3 + k)});
-    }
-  std::sort(half.begin(), half.end());
+  int nv = 0;
+  for (const Tri& t : F) nv = std::max({nv, t[0] + 1, t[1] + 1, t[2] + 1});
+  std::vector<int> first(static_cast<std::size_t>(nv) + 1, 0);
+  for (const Tri& t : F)
+    for (int k = 0; k < 3; ++k) ++first[std::min(t[k], t[(k + 1) % 3]) + 1];
+  for (int v = 0; v < nv; ++v) first[v + 1] += first[v];
+  std::vector<std::array<int, 2>> half(F.size() * 3);  // (v1, triangle * 3 + k), grouped by v0
+  {
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for (std::size_t t = 0; t < F.size(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        const int a = F[t][k], b = F[t][(k + 1) % 3];
+        half[fill[std::min(a, b)]++] = {std::max(a, b), static_cast<int>(t * 3 + k)};
+      }
+  }
   g.triangle_edges.assign(F.size(), {-1, -1, -1});
-  for (std::size_t i = 0; i < half.size(); ++i) {
-    if (i == 0 || half[i][0] != half[i - 1][0] || half[i][1] != half[i - 1][1])
-      g.edges.push_back({half[i][0], half[i][1]});
-    g.triangle_edges[half[i][2] / 3][half[i][2] % 3] = static_cast<int>(g.edges.size() - 1);
+  for (int v = 0; v < nv; ++v) {
+    std::sort(half.begin() + first[v], half.begin() + first[v + 1]);
+    for (int i = first[v]; i < first[v + 1]; ++i) {
+      if (i == first[v] || half[i][0] != half[i - 1][0]) g.edges.push_back({v, half[i][0]});
+      g.triangle_edges[half[i][1] / 3][half[i][1] % 3] = static_cast<int>(g.edges.size() - 1);
+    }
   }
 }
 
@@ -342,7 +353,7 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   for (auto& v : g.edge_points) sort_unique(v);
   for (auto& v : g.triangle_points) sort_unique(v);
   for (auto& v : g.triangle_segments) sort_unique(v);
-  share_coplanar(V, F, g);  // keeps the lists sorted and unique
+  if (g.coplanar_pairs > 0) share_coplanar(V, F, g);  // keeps the lists sorted and unique
   sort_unique(g.segment_supports);
   std::vector<std::array<int, 2>> all_segments;
   for (const auto& v : g.triangle_segments) all_segments.insert(all_segments.end(), v.begin(), v.end());
