@@ -12,6 +12,10 @@
 #include <string>
 #include <unordered_map>
 #include <vector>
+#include <numeric>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <tritri/double_kernel.h>
 #include <tritri/projection.h>
@@ -19,35 +23,6 @@
 namespace arrangements {
 namespace {
 
-std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser
-  x ^= x >> 30;
-  x *= 0xbf58476d1ce4e5b9ULL;
-  x ^= x >> 27;
-  x *= 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-std::uint64_t bits_of(double d) {
-  std::uint64_t b;
-  std::memcpy(&b, &d, sizeof b);
-  return b;
-}
-
-struct PositionHash {
-  std::size_t operator()(const Vec3& p) const {
-    return static_cast<std::size_t>(mix(bits_of(p[0]) ^ mix(bits_of(p[1]) ^ mix(bits_of(p[2])))));
-  }
-};
-
-struct CornerSetHash {
-  std::size_t operator()(const Tri& t) const {
-    return static_cast<std::size_t>(mix(
-        static_cast<std::uint32_t>(t[0]) ^
-        mix((static_cast<std::uint64_t>(static_cast<std::uint32_t>(t[1])) << 32) ^ static_cast<std::uint32_t>(t[2]))));
-  }
-};
-
-// -0.0 + 0.0 == +0.0, so equal coordinates get equal bits (hash and output).
 Vec3 without_negative_zero(const Vec3& p) { return {p[0] + 0.0, p[1] + 0.0, p[2] + 0.0}; }
 
 // Collinear iff degenerate in all three axis projections (tritri::projection's test).
@@ -85,52 +60,82 @@ bool scale_exactly(std::vector<Vec3>& vertices, int k) {
 TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options, PreprocessStats& stats) {
   stats = PreprocessStats{};
 
-  // Distinct positions, in input order.
-  std::vector<Vec3> positions;
-  std::vector<int> position_of(in.vertices.size());
+  // Distinct positions, in input order: the vertices sorted by position (ties by index,
+  // in parallel), each run of equal positions named by its first vertex.
+  const std::size_t nv = in.vertices.size();
+  std::vector<Vec3> at(nv);
+  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) { at[v] = without_negative_zero(in.vertices[v]); });
+  std::vector<int> first_with(nv);  // the first vertex at the same position
   {
-    std::unordered_map<Vec3, int, PositionHash> id_of;
-    id_of.reserve(in.vertices.size());
-    for (std::size_t v = 0; v < in.vertices.size(); ++v) {
-      const Vec3 p = without_negative_zero(in.vertices[v]);
-      const auto [it, inserted] = id_of.try_emplace(p, static_cast<int>(positions.size()));
-      if (inserted) positions.push_back(p);
-      position_of[v] = it->second;
+    std::vector<int> order(nv);
+    std::iota(order.begin(), order.end(), 0);
+    tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) { return at[a] != at[b] ? at[a] < at[b] : a < b; });
+    for (std::size_t i = 0; i < nv; ++i)
+      first_with[order[i]] = i > 0 && at[order[i]] == at[order[i - 1]] ? first_with[order[i - 1]] : order[i];
+  }
+  std::vector<Vec3> positions;
+  std::vector<int> position_of(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (first_with[v] == static_cast<int>(v)) {
+      position_of[v] = static_cast<int>(positions.size());
+      positions.push_back(at[v]);
+    } else {
+      position_of[v] = position_of[first_with[v]];  // an earlier vertex
     }
   }
-  stats.merged_vertices = in.vertices.size() - positions.size();
+  at = {};
+  first_with = {};
+  stats.merged_vertices = nv - positions.size();
 
   // Kept triangles (corners as position ids), their input label-set indices, and the
   // labels their duplicates add (appended, sorted once at the end: merging k copies with
-  // distinct labels stays linear in the number of labels).
+  // distinct labels stays linear in the number of labels). Degenerate triangles are found
+  // in parallel; duplicates by sorting the corner sets (ties by index), the first of each
+  // run kept.
+  const std::size_t nf = in.triangles.size();
+  std::vector<Tri> corners(nf), key(nf);
+  std::vector<char> degenerate(nf);
+  tbb::parallel_for(std::size_t{0}, nf, [&](std::size_t t) {
+    const Tri& tri = in.triangles[t];
+    const Tri p = {position_of[tri[0]], position_of[tri[1]], position_of[tri[2]]};
+    corners[t] = key[t] = p;
+    std::sort(key[t].begin(), key[t].end());
+    degenerate[t] = p[0] == p[1] || p[1] == p[2] || p[0] == p[2] || collinear(positions[p[0]], positions[p[1]], positions[p[2]]);
+  });
+  std::vector<int> first_copy(nf, -1);  // the first non-degenerate triangle with the same corners
+  {
+    std::vector<int> order;
+    order.reserve(nf);
+    for (std::size_t t = 0; t < nf; ++t)
+      if (!degenerate[t]) order.push_back(static_cast<int>(t));
+    tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] != key[b] ? key[a] < key[b] : a < b; });
+    for (std::size_t i = 0; i < order.size(); ++i)
+      first_copy[order[i]] = i > 0 && key[order[i]] == key[order[i - 1]] ? first_copy[order[i - 1]] : order[i];
+  }
+  key = {};
   std::vector<Tri> kept;
   std::vector<int> kept_set;
   std::vector<std::int64_t> kept_source, kept_polygon;
   std::unordered_map<int, std::vector<std::uint32_t>> added_labels;
   {
-    std::unordered_map<Tri, int, CornerSetHash> kept_by_corners;
-    kept_by_corners.reserve(in.triangles.size());
-    for (std::size_t t = 0; t < in.triangles.size(); ++t) {
-      const Tri& tri = in.triangles[t];
-      const Tri p = {position_of[tri[0]], position_of[tri[1]], position_of[tri[2]]};
-      const bool repeated = p[0] == p[1] || p[1] == p[2] || p[0] == p[2];
-      if (repeated || collinear(positions[p[0]], positions[p[1]], positions[p[2]])) {
+    std::vector<int> kept_index(nf, -1);
+    for (std::size_t t = 0; t < nf; ++t) {
+      if (degenerate[t]) {
         ++stats.removed_degenerate;
         continue;
       }
-      Tri key = p;
-      std::sort(key.begin(), key.end());
-      const auto [it, inserted] = kept_by_corners.try_emplace(key, static_cast<int>(kept.size()));
-      if (!inserted) {
+      if (first_copy[t] != static_cast<int>(t)) {
         ++stats.removed_duplicate;
-        if (in.label_set[t] != kept_set[it->second]) {
+        const int k = kept_index[first_copy[t]];  // kept earlier
+        if (in.label_set[t] != kept_set[k]) {
           const LabelSet& labels = in.label_sets[in.label_set[t]];
-          std::vector<std::uint32_t>& added = added_labels[it->second];
+          std::vector<std::uint32_t>& added = added_labels[k];
           added.insert(added.end(), labels.begin(), labels.end());
         }
         continue;
       }
-      kept.push_back(p);
+      kept_index[t] = static_cast<int>(kept.size());
+      kept.push_back(corners[t]);
       kept_set.push_back(in.label_set[t]);
       kept_source.push_back(in.source[t]);
       if (!in.polygon.empty()) kept_polygon.push_back(in.polygon[t]);

@@ -43,8 +43,10 @@
 // (scale_exponent 0; the later stages are exact at any magnitude, only slower). All-zero coordinates (no triangle
 // survives anyway) give k = 0.
 //
-// Cost: expected O(#V + #F + total labels of duplicates) (hashing), plus one to three exact
-// orient2d per triangle; distinct label sets are kept in a std::map.
+// Cost: O(#V log #V + #F log #F + total labels of duplicates) (parallel sorts of the
+// positions and of the corner sets), plus one to three exact orient2d per triangle, in
+// parallel; distinct label sets are kept in a std::map. The result does not depend on the
+// number of threads.
 #pragma once
 
 #include <cstddef>

@@ -35,6 +35,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -121,23 +122,24 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
       for (int y = r[1]; y <= r[4]; ++y)
         for (int x = r[0]; x <= r[3]; ++x) f(g.index(x, y, z));
   };
-  // Each box on the first level where it meets at most 8 cells (the coarsest level, where
-  // the whole span is a few cells, always qualifies).
-  std::vector<std::uint8_t> level_of(n);
+  // Each box on the first level where it meets at most 8 cells; the levels go up to one
+  // of at most 2 cells per axis, where every box qualifies. In parallel: the counts with
+  // relaxed atomic increments (the order of boxes within a cell does not matter).
   add_level();
-  for (std::size_t i = 0; i < n; ++i) {
-    std::size_t l = 0;
-    for (;; ++l) {
-      if (l == levels.size()) add_level();
-      if (count(range(levels[l], boxes[i])) <= 8) break;
-    }
-    level_of[i] = static_cast<std::uint8_t>(l);
-  }
+  while (levels.back().dim[0] > 2 || levels.back().dim[1] > 2 || levels.back().dim[2] > 2) add_level();
+  std::vector<std::uint8_t> level_of(n);
   for (GridLevel& g : levels) g.first.assign(g.cells() + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    GridLevel& g = levels[level_of[i]];
-    for_cells(g, range(g, boxes[i]), [&](std::size_t c) { ++g.first[c + 1]; });
-  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+      std::size_t l = 0;
+      while (count(range(levels[l], boxes[i])) > 8) ++l;
+      level_of[i] = static_cast<std::uint8_t>(l);
+      GridLevel& g = levels[l];
+      for_cells(g, range(g, boxes[i]), [&](std::size_t c) {
+        std::atomic_ref<std::uint32_t>(g.first[c + 1]).fetch_add(1, std::memory_order_relaxed);
+      });
+    }
+  });
   for (GridLevel& g : levels)
     for (std::size_t c = 0; c < g.cells(); ++c) g.first[c + 1] += g.first[c];
   // Decline when the pairwise tests would cost more than the segment tree: boxes crowding
@@ -152,9 +154,14 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
       tests += k * k / 2;
     }
   std::vector<char> occupied(levels.size(), 0);
-  for (std::size_t i = 0; i < n; ++i) occupied[level_of[i]] = 1;
-  for (std::size_t i = 0; i < n && tests <= budget; ++i)
-    for (std::size_t l = level_of[i] + 1u; l < levels.size(); ++l)
+  std::size_t top = 0;  // the highest level with boxes
+  for (std::size_t l = 0; l < levels.size(); ++l)
+    if (levels[l].first.back() > 0) {
+      occupied[l] = 1;
+      top = l;
+    }
+  for (std::size_t i = 0; i < n && tests <= budget && top > 0; ++i)
+    for (std::size_t l = level_of[i] + 1u; l <= top; ++l)
       if (occupied[l])
         for_cells(levels[l], range(levels[l], boxes[i]),
                   [&](std::size_t c) { tests += levels[l].first[c + 1] - levels[l].first[c]; });
@@ -165,11 +172,16 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
       levels[l].member.resize(levels[l].first.back());
       fill[l].assign(levels[l].first.begin(), levels[l].first.end() - 1);
     }
-    for (std::size_t i = 0; i < n; ++i) {
-      GridLevel& g = levels[level_of[i]];
-      std::vector<std::uint32_t>& f = fill[level_of[i]];
-      for_cells(g, range(g, boxes[i]), [&](std::size_t c) { g.member[f[c]++] = static_cast<std::uint32_t>(i); });
-    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t i = r.begin(); i < r.end(); ++i) {
+        GridLevel& g = levels[level_of[i]];
+        std::vector<std::uint32_t>& f = fill[level_of[i]];
+        for_cells(g, range(g, boxes[i]), [&](std::size_t c) {
+          g.member[std::atomic_ref<std::uint32_t>(f[c]).fetch_add(1, std::memory_order_relaxed)] =
+              static_cast<std::uint32_t>(i);
+        });
+      }
+    });
   }
   // Reports a and b when they overlap and the minimum corner of their intersection lies in
   // cell c of level g.
@@ -185,16 +197,17 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
   };
   // Pairs on one level.
   for (const GridLevel& g : levels)
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, g.cells(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+    if (g.first.back() > 1)
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, g.cells(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
       for (std::size_t c = r.begin(); c < r.end(); ++c)
         for (std::uint32_t p = g.first[c]; p < g.first[c + 1]; ++p)
           for (std::uint32_t q = p + 1; q < g.first[c + 1]; ++q) test(g, c, boxes[g.member[p]], boxes[g.member[q]]);
     });
   // Pairs across levels: each box against the boxes of every higher level in its cells there.
-  if (levels.size() > 1)
+  if (top > 0)
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
       for (std::size_t i = r.begin(); i < r.end(); ++i)
-        for (std::size_t l = level_of[i] + 1u; l < levels.size(); ++l) {
+        for (std::size_t l = level_of[i] + 1u; l <= top; ++l) {
           if (!occupied[l]) continue;
           const GridLevel& g = levels[l];
           for_cells(g, range(g, boxes[i]), [&](std::size_t c) {
