@@ -137,6 +137,8 @@ class PairRecords {
   const_iterator begin() const { return {&chunks_, 0}; }
   const_iterator end() const { return {&chunks_, chunks_.size()}; }
   std::size_t size() const noexcept { return size_; }
+  // The chunks themselves, in order (for reading them in parallel).
+  const std::vector<PairRecordChunk>& chunks() const noexcept { return chunks_; }
 
  private:
   std::vector<PairRecordChunk> chunks_;

@@ -4,7 +4,9 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <numeric>
+#include <type_traits>
 
 #include <tritri/double_kernel.h>
 #include <tritri/implicit_predicates.h>
@@ -22,6 +24,39 @@ template <class T>
 void sort_unique(std::vector<T>& v) {
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+// The vectors of `parts` one after the other in `out` (each part freed once copied).
+template <class T>
+void concatenate(std::vector<std::vector<T>>& parts, std::vector<T>& out) {
+  std::size_t n = 0;
+  for (const auto& p : parts) n += p.size();
+  out.clear();
+  out.reserve(n);
+  for (auto& p : parts) {
+    out.insert(out.end(), p.begin(), p.end());
+    std::vector<T>().swap(p);
+  }
+}
+
+// lists[k]: value(x) for every entry x with key x[0] == k among the entries of all parts,
+// sorted and unique. A counting pass sizes each list once; the lists are then sorted in
+// parallel (they are short: the points or segments of one triangle or edge).
+template <class Entry, class List, class Value>
+void group(std::vector<std::vector<Entry>>& parts, std::size_t keys, std::vector<List>& lists, Value value) {
+  std::vector<std::uint32_t> count(keys, 0);
+  for (const auto& part : parts)
+    for (const Entry& x : part) ++count[x[0]];
+  lists.assign(keys, {});
+  for (std::size_t k = 0; k < keys; ++k)
+    if (count[k]) lists[k].reserve(count[k]);
+  for (auto& part : parts) {
+    for (const Entry& x : part) lists[x[0]].push_back(value(x));
+    std::vector<Entry>().swap(part);
+  }
+  tbb::parallel_for(std::size_t{0}, keys, [&](std::size_t k) {
+    if (count[k] > 1) sort_unique(lists[k]);
+  });
 }
 
 // Unique edges, numbered in lexicographic order of (smaller id, larger id): a counting
@@ -226,14 +261,19 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   // 1. New points by definition. A crossing of two edges is named by the two edges (its
   // LPI may use the plane of either triangle on either side, so several pairs describe
   // it differently); an edge crossing a face by its LPI. Each name keeps its smallest LPI.
+  const std::vector<PairRecordChunk>& chunks = pairs.chunks();
   std::vector<std::pair<PointName, LpiKey>> named;
-  std::size_t new_points = 0;
-  for (const auto& p : pairs)
-    for (const auto& q : p.points) new_points += q.vertex < 0;
-  named.reserve(new_points);
-  for (const auto& p : pairs)
-    for (const auto& q : p.points)
-      if (q.vertex < 0) named.emplace_back(point_name(F, p, q), q.lpi);
+  {
+    std::vector<std::vector<std::pair<PointName, LpiKey>>> per_chunk(chunks.size());
+    tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+      for (std::size_t i = 0; i < chunks[c].size(); ++i) {
+        const PairIntersection p = chunks[c][i];
+        for (const auto& q : p.points)
+          if (q.vertex < 0) per_chunk[c].emplace_back(point_name(F, p, q), q.lpi);
+      }
+    });
+    concatenate(per_chunk, named);
+  }
   tbb::parallel_sort(named.begin(), named.end());
   named.erase(std::unique(named.begin(), named.end()), named.end());
   std::vector<PointName> names;
@@ -288,14 +328,18 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
       return c != 0 ? c < 0 : a < b;  // (preprocessing merged equal vertices; deterministic anyway)
     });
   }
+  // Both sequences in one order: a merge finds every match.
   std::vector<int> vertex_match(keys.size(), -1);
-  tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) {
-    if (representative[i] != static_cast<int>(i)) return;
-    auto compare_vertex = [&](int vid) { return tritri::compare_along_direction(g.points[vid], vb[vid], lpis[i], db[i]); };
-    auto it = std::lower_bound(by_position.begin(), by_position.end(), 0,
-                               [&](int vid, int) { return compare_vertex(vid) < 0; });
-    if (it != by_position.end() && compare_vertex(*it) == 0) vertex_match[i] = *it;
-  });
+  for (std::size_t i = 0, v = 0; i < order.size() && v < by_position.size();) {
+    const int k = order[i], vid = by_position[v];
+    const int c = tritri::compare_along_direction(g.points[vid], vb[vid], lpis[k], db[k]);
+    if (c < 0) {
+      ++v;
+    } else {
+      if (c == 0) vertex_match[k] = vid;
+      ++i;
+    }
+  }
   for (std::size_t i = 0; i < keys.size(); ++i) {
     if (representative[i] != static_cast<int>(i)) continue;
     if (vertex_match[i] >= 0) {
@@ -312,53 +356,85 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   for (const int k : order)
     if (representative[k] == k && vertex_match[k] < 0) g.new_points_sorted.push_back(final_id[k]);
 
-  // 4. Record points, segments and coplanar partners per triangle and edge.
-  g.edge_points.assign(g.edges.size(), {});
-  g.triangle_points.assign(F.size(), {});
-  g.triangle_segments.assign(F.size(), {});
-  g.coplanar_partners.assign(F.size(), {});
+  // 4. Record points, segments and coplanar partners per triangle and edge: each chunk of
+  // records lists its entries (in parallel), which are then sorted and grouped.
   auto id_of = [&](const PairIntersection& p, const PairPoint& q) {
     if (q.vertex >= 0) return q.vertex;
     return final_id[std::lower_bound(names.begin(), names.end(), point_name(F, p, q)) - names.begin()];
   };
-  for (const PairIntersection& p : pairs) {
-    ++g.intersecting_pairs;
-    int ids[6];
-    for (std::size_t i = 0; i < p.points.size(); ++i) {
-      ids[i] = id_of(p, p.points[i]);
-      for (int k = 0; k < 2; ++k) {
-        const Location& loc = p.points[i].in[k];
-        if (loc.kind == Location::Edge) g.edge_points[g.triangle_edges[p.tri[k]][loc.id]].push_back(ids[i]);
-        if (loc.kind == Location::Interior) g.triangle_points[p.tri[k]].push_back(ids[i]);
+  struct Entries {
+    std::vector<std::array<int, 2>> edge_point, triangle_point, partner;  // (edge or triangle, id)
+    std::vector<std::array<int, 3>> triangle_segment;                      // (triangle, a, b)
+    std::vector<SegmentSupport> supports;
+  };
+  std::vector<Entries> found(chunks.size());
+  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+    Entries& e = found[c];
+    for (std::size_t r = 0; r < chunks[c].size(); ++r) {
+      const PairIntersection p = chunks[c][r];
+      int ids[6];
+      for (std::size_t i = 0; i < p.points.size(); ++i) {
+        ids[i] = id_of(p, p.points[i]);
+        for (int k = 0; k < 2; ++k) {
+          const Location& loc = p.points[i].in[k];
+          if (loc.kind == Location::Edge) e.edge_point.push_back({g.triangle_edges[p.tri[k]][loc.id], ids[i]});
+          if (loc.kind == Location::Interior) e.triangle_point.push_back({p.tri[k], ids[i]});
+        }
       }
+      for (const auto& s : p.segments) {
+        int a = ids[s.p0], b = ids[s.p1];
+        if (a == b) continue;
+        if (a > b) std::swap(a, b);
+        e.supports.push_back(segment_support(F, p, s, a, b));
+        // A segment along a triangle's own edge is already that edge (its points are
+        // recorded on the edge): it constrains only the triangles it crosses.
+        for (int k = 0; k < 2; ++k)
+          if (!(closed_edges(p.points[s.p0].in[k]) & closed_edges(p.points[s.p1].in[k])))
+            e.triangle_segment.push_back({p.tri[k], a, b});
+      }
+      if (p.coplanar) e.partner.insert(e.partner.end(), {{p.tri[0], p.tri[1]}, {p.tri[1], p.tri[0]}});
     }
-    for (const auto& s : p.segments) {
-      int a = ids[s.p0], b = ids[s.p1];
-      if (a == b) continue;
-      if (a > b) std::swap(a, b);
-      g.segment_supports.push_back(segment_support(F, p, s, a, b));
-      // A segment along a triangle's own edge is already that edge (its points are
-      // recorded on the edge): it constrains only the triangles it crosses.
-      for (int k = 0; k < 2; ++k)
-        if (!(closed_edges(p.points[s.p0].in[k]) & closed_edges(p.points[s.p1].in[k])))
-          g.triangle_segments[p.tri[k]].push_back({a, b});
-    }
-    if (p.coplanar) {
-      ++g.coplanar_pairs;
-      g.coplanar_partners[p.tri[0]].push_back(p.tri[1]);
-      g.coplanar_partners[p.tri[1]].push_back(p.tri[0]);
-    }
+  });
+  g.intersecting_pairs = pairs.size();
+  auto parts = [&](auto member) {  // one member of every chunk's entries, moved out
+    std::vector<std::decay_t<decltype(found[0].*member)>> all(found.size());
+    for (std::size_t c = 0; c < found.size(); ++c) all[c] = std::move(found[c].*member);
+    return all;
+  };
+  {
+    auto partner = parts(&Entries::partner);
+    for (const auto& part : partner) g.coplanar_pairs += part.size() / 2;  // each pair's record once
+    group(partner, F.size(), g.coplanar_partners, [](const auto& x) { return x[1]; });
   }
-  for (auto& v : g.coplanar_partners) sort_unique(v);
-  for (auto& v : g.edge_points) sort_unique(v);
-  for (auto& v : g.triangle_points) sort_unique(v);
-  for (auto& v : g.triangle_segments) sort_unique(v);
+  {
+    auto edge_point = parts(&Entries::edge_point);
+    group(edge_point, g.edges.size(), g.edge_points, [](const auto& x) { return x[1]; });
+  }
+  {
+    auto triangle_point = parts(&Entries::triangle_point);
+    group(triangle_point, F.size(), g.triangle_points, [](const auto& x) { return x[1]; });
+  }
+  {
+    auto triangle_segment = parts(&Entries::triangle_segment);
+    group(triangle_segment, F.size(), g.triangle_segments,
+          [](const auto& x) { return std::array<int, 2>{x[1], x[2]}; });
+  }
+  {
+    auto supports = parts(&Entries::supports);
+    concatenate(supports, g.segment_supports);
+  }
+  tbb::parallel_sort(g.segment_supports.begin(), g.segment_supports.end());
+  g.segment_supports.erase(std::unique(g.segment_supports.begin(), g.segment_supports.end()),
+                           g.segment_supports.end());
+  found = {};
   if (g.coplanar_pairs > 0) share_coplanar(V, F, g);  // keeps the lists sorted and unique
-  sort_unique(g.segment_supports);
   std::vector<std::array<int, 2>> all_segments;
+  std::size_t listed = 0;
+  for (const auto& v : g.triangle_segments) listed += v.size();
+  all_segments.reserve(listed);
   for (const auto& v : g.triangle_segments) all_segments.insert(all_segments.end(), v.begin(), v.end());
-  sort_unique(all_segments);
-  g.segments = all_segments.size();
+  tbb::parallel_sort(all_segments.begin(), all_segments.end());
+  g.segments = std::unique(all_segments.begin(), all_segments.end()) - all_segments.begin();
   return g;
 }
 

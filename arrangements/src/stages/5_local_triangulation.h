@@ -1,0 +1,340 @@
+// arrangements/src/stages/5_local_triangulation.h
+//
+// LocalTriangulation: the constrained triangulation of one input triangle, built by point
+// insertion and constraint insertion with edge flips (Sloan's algorithm), for stage 5
+// (5_triangulate_triangle.cpp, its only user). All decisions are orient2d on implicit
+// points (tritri's filtered exact predicates) in a projection where the input triangle is
+// not degenerate, times that triangle's orientation there, so that every local triangle
+// is positive ("CCW"). Point location is a stochastic visibility walk seeded the same way
+// for every triangle: deterministic.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include <tritri/implicit_predicates.h>
+
+#include "arrangements/triangle_soup.h"
+
+namespace arrangements::local {
+
+using tritri::ImplicitPoint;
+
+// A triangle of the local triangulation of one input triangle. Edge k is the edge
+// opposite v[k] (from v[k+1] to v[k+2]); n[k] the triangle across it (-1: the input
+// triangle's boundary); c[k] the constraint it lies on (-1: none).
+struct LocalTriangle {
+  int v[3];
+  int n[3];
+  int c[3];
+};
+
+inline int next3(int k) { return k == 2 ? 0 : k + 1; }
+inline int prev3(int k) { return k == 0 ? 2 : k - 1; }
+
+// (See the top of this file.)
+class LocalTriangulation {
+ public:
+  std::deque<ImplicitPoint> pts;         // local vertices (a deque: off[i] points into it)
+  std::vector<tritri::OffsetPoint> off;  // their offset coordinates (origin: a corner)
+  std::vector<LocalTriangle> tris;
+  std::vector<int> vtri;  // a triangle incident to each vertex
+
+  LocalTriangulation(tritri::Plane plane, int sign, const Vec3& origin) : plane_(plane), sign_(sign), origin_(origin) {}
+
+  int orient(int a, int b, int c) const {
+    return sign_ * tritri::to_int(tritri::orient2d(off[a], off[b], off[c], plane_));
+  }
+
+  int add_vertex(const ImplicitPoint& p) {
+    pts.push_back(p);
+    off.push_back(tritri::offset_point(pts.back(), origin_));
+    vtri.push_back(-1);
+    return static_cast<int>(pts.size()) - 1;
+  }
+
+  void start(int a, int b, int c) {
+    tris.push_back({{a, b, c}, {-1, -1, -1}, {-1, -1, -1}});
+    vtri[a] = vtri[b] = vtri[c] = 0;
+    last_ = 0;
+  }
+
+  // Inserts vertex p (inside the closed input triangle, distinct from every vertex).
+  void insert_point(int p) {
+    const auto [t, edge] = locate(p);
+    if (edge < 0)
+      split_triangle(t, p);
+    else
+      split_edge(t, edge, p);
+  }
+
+  // Inserts vertex p known to lie inside the boundary edge (u, w).
+  void split_boundary_edge(int u, int w, int p) {
+    const auto [t, k] = find_edge(u, w);
+    split_edge(t, k, p);
+  }
+
+  // Inserts the constraint segment (a, b) between two vertices. `crossing(cid, other)`
+  // returns a new vertex at the crossing of constraint cid with constraint `other`.
+  template <class Crossing>
+  void insert_constraint(int a, int b, int cid, Crossing&& crossing) {
+    int cur = a;
+    std::vector<std::array<int, 2>> crossed;
+    while (cur != b) {
+      int target = -1;
+      crossed.clear();
+      // The triangle around cur whose wedge contains the direction to b.
+      bool done = false;
+      const std::vector<int> ring = around(cur);
+      for (int t : ring) {
+        const LocalTriangle& T = tris[t];
+        const int i = index_of(T, cur);
+        const int u = T.v[next3(i)], w = T.v[prev3(i)];
+        if (u == b || w == b) {
+          mark(t, u == b ? prev3(i) : next3(i), cid);
+          target = b;
+          done = true;
+          break;
+        }
+        const int ou = orient(a, b, u), ow = orient(a, b, w);
+        if (ou == 0 && ow > 0) {  // u lies on the segment, ahead of cur
+          mark(t, prev3(i), cid);
+          target = u;
+          done = true;
+        } else if (ow == 0 && ou < 0) {  // w lies on the segment, ahead of cur
+          mark(t, next3(i), cid);
+          target = w;
+          done = true;
+        } else if (ou < 0 && ow > 0) {  // the segment leaves through edge (u, w)
+          target = walk(t, i, a, b, cid, crossing, crossed);
+          done = true;
+        }
+        if (done) break;
+      }
+      if (!done) throw std::logic_error("triangulate: constraint direction not found around a vertex");
+      if (target < 0) continue;  // a crossing was inserted: look again from cur
+      if (!crossed.empty()) {
+        flip_until_present(a, b, cur, target, crossed);
+        const auto [t, k] = find_edge(cur, target);
+        mark(t, k, cid);
+      }
+      cur = target;
+    }
+  }
+
+ private:
+  tritri::Plane plane_;
+  int sign_;
+  Vec3 origin_;
+  int last_ = 0;
+  std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;
+
+  static int index_of(const LocalTriangle& T, int v) { return T.v[0] == v ? 0 : (T.v[1] == v ? 1 : 2); }
+
+  int random3() {
+    rng_ ^= rng_ << 13;
+    rng_ ^= rng_ >> 7;
+    rng_ ^= rng_ << 17;
+    return static_cast<int>(rng_ % 3);
+  }
+
+  // Stochastic visibility walk (terminates in any triangulation with probability 1; the
+  // generator is seeded the same way for every input triangle: deterministic).
+  std::pair<int, int> locate(int p) {
+    int t = last_;
+    for (std::size_t steps = 0;; ++steps) {
+      if (steps > 4 * tris.size() + 64) throw std::logic_error("triangulate: point location did not terminate");
+      const LocalTriangle& T = tris[t];
+      const int off = random3();
+      int zeros = 0, on_edge = -1, next = -2;
+      for (int r = 0; r < 3; ++r) {
+        const int k = (off + r) % 3;
+        const int o = orient(T.v[next3(k)], T.v[prev3(k)], p);
+        if (o < 0) {
+          next = T.n[k];
+          break;
+        }
+        if (o == 0) {
+          ++zeros;
+          on_edge = k;
+        }
+      }
+      if (next == -1) throw std::logic_error("triangulate: a point lies outside its triangle");
+      if (next >= 0) {
+        t = next;
+        continue;
+      }
+      if (zeros >= 2) throw std::logic_error("triangulate: a point coincides with a vertex");
+      return {t, zeros == 1 ? on_edge : -1};
+    }
+  }
+
+  void set_vtri(int t) {
+    for (int v : tris[t].v) vtri[v] = t;
+  }
+
+  void replace_neighbor(int t, int from, int to) {
+    if (t < 0) return;
+    for (int& x : tris[t].n)
+      if (x == from) x = to;
+  }
+
+  void split_triangle(int t, int p) {
+    const LocalTriangle T = tris[t];
+    const int a = T.v[0], b = T.v[1], c = T.v[2];
+    const int t1 = static_cast<int>(tris.size()), t2 = t1 + 1;
+    tris[t] = {{p, b, c}, {T.n[0], t1, t2}, {T.c[0], -1, -1}};
+    tris.push_back({{a, p, c}, {t, T.n[1], t2}, {-1, T.c[1], -1}});
+    tris.push_back({{a, b, p}, {t, t1, T.n[2]}, {-1, -1, T.c[2]}});
+    replace_neighbor(T.n[1], t, t1);
+    replace_neighbor(T.n[2], t, t2);
+    set_vtri(t);
+    set_vtri(t1);
+    set_vtri(t2);
+    last_ = t;
+  }
+
+  // Splits edge k of triangle t (and the triangle across it) at vertex p inside it.
+  void split_edge(int t, int k, int p) {
+    const LocalTriangle T = tris[t];
+    const int a = T.v[k], b = T.v[next3(k)], c = T.v[prev3(k)];
+    const int u = T.n[k], ce = T.c[k];
+    const int t2 = static_cast<int>(tris.size());
+    int u2 = -1;
+    LocalTriangle U{};
+    int j = 0;
+    if (u >= 0) {
+      U = tris[u];
+      for (j = 0; j < 3; ++j)
+        if (U.n[j] == t) break;
+      u2 = t2 + 1;
+    }
+    // t = (a, b, p), t2 = (a, p, c)
+    tris[t] = {{a, b, p}, {u2, t2, T.n[prev3(k)]}, {ce, -1, T.c[prev3(k)]}};
+    tris.push_back({{a, p, c}, {u, T.n[next3(k)], t}, {ce, T.c[next3(k)], -1}});
+    replace_neighbor(T.n[next3(k)], t, t2);
+    if (u >= 0) {
+      const int d = U.v[j];  // U = (d, c, b)
+      tris[u] = {{d, c, p}, {t2, u2, U.n[prev3(j)]}, {ce, -1, U.c[prev3(j)]}};
+      tris.push_back({{d, p, b}, {t, U.n[next3(j)], u}, {ce, U.c[next3(j)], -1}});
+      replace_neighbor(U.n[next3(j)], u, u2);
+      set_vtri(u);
+      set_vtri(u2);
+    }
+    set_vtri(t);
+    set_vtri(t2);
+    last_ = t;
+  }
+
+  // The triangles around vertex v (collected first: callers may change the mesh).
+  const std::vector<int>& around(int v) {
+    ring_.clear();
+    const int t0 = vtri[v];
+    int t = t0;
+    do {
+      ring_.push_back(t);
+      const LocalTriangle& T = tris[t];
+      t = T.n[next3(index_of(T, v))];  // across edge (v, w): counterclockwise
+    } while (t >= 0 && t != t0);
+    if (t == t0) return ring_;
+    t = tris[t0].n[prev3(index_of(tris[t0], v))];  // the other way from t0
+    while (t >= 0) {
+      ring_.push_back(t);
+      const LocalTriangle& T = tris[t];
+      t = T.n[prev3(index_of(T, v))];
+    }
+    return ring_;
+  }
+  std::vector<int> ring_;
+
+  // The triangle and edge index of edge (u, w).
+  std::pair<int, int> find_edge(int u, int w) {
+    for (int t : around(u)) {
+      const LocalTriangle& T = tris[t];
+      const int i = index_of(T, u);
+      if (T.v[next3(i)] == w) return {t, prev3(i)};
+      if (T.v[prev3(i)] == w) return {t, next3(i)};
+    }
+    throw std::logic_error("triangulate: edge not found");
+  }
+
+  void mark(int t, int k, int cid) {
+    LocalTriangle& T = tris[t];
+    if (T.c[k] >= 0) return;  // already on a constraint (overlapping constraints)
+    T.c[k] = cid;
+    const int u = T.n[k];
+    if (u < 0) return;
+    const int a = T.v[next3(k)], b = T.v[prev3(k)];
+    LocalTriangle& U = tris[u];
+    for (int j = 0; j < 3; ++j)
+      if (U.v[j] != a && U.v[j] != b) U.c[j] = cid;
+  }
+
+  // From triangle t, whose edge i the open segment (a, b) crosses, collects the crossed
+  // edges up to the first vertex on the segment (returned). If a crossed edge lies on a
+  // constraint, inserts the crossing point instead and returns -1.
+  template <class Crossing>
+  int walk(int t, int i, int a, int b, int cid, Crossing& crossing, std::vector<std::array<int, 2>>& crossed) {
+    for (;;) {
+      const LocalTriangle& T = tris[t];
+      const int u = T.v[next3(i)], w = T.v[prev3(i)];
+      if (T.c[i] >= 0) {
+        const int x = crossing(cid, T.c[i]);
+        split_edge(t, i, x);
+        return -1;
+      }
+      const int n = T.n[i];
+      if (n < 0) throw std::logic_error("triangulate: a constraint leaves its triangle");
+      crossed.push_back({u, w});
+      const LocalTriangle& N = tris[n];
+      int j = 0;
+      while (N.n[j] != t) ++j;
+      const int x = N.v[j];  // N = (x, w, u)
+      if (x == b) return b;
+      const int ox = orient(a, b, x);
+      if (ox == 0) return x;
+      t = n;
+      i = ox < 0 ? prev3(j) : next3(j);  // next crossed edge: (x, w) or (u, x)
+    }
+  }
+
+  // Sloan's flips: until no edge crosses the open segment (from, to) on line (a, b).
+  void flip_until_present(int a, int b, int from, int to, std::vector<std::array<int, 2>>& crossed) {
+    std::deque<std::array<int, 2>> queue(crossed.begin(), crossed.end());
+    std::size_t stalled = 0;
+    while (!queue.empty()) {
+      const auto [u, w] = queue.front();
+      queue.pop_front();
+      const auto [t, i] = find_edge(u, w);
+      const LocalTriangle T = tris[t];
+      const int n = T.n[i];
+      const LocalTriangle N = tris[n];
+      int j = 0;
+      while (N.n[j] != t) ++j;
+      const int p1 = T.v[i], p2 = N.v[j];
+      const int uu = T.v[next3(i)], ww = T.v[prev3(i)];
+      if (orient(p1, p2, uu) * orient(p1, p2, ww) >= 0) {  // not strictly convex: later
+        queue.push_back({u, w});
+        if (++stalled > 2 * queue.size() + 16) throw std::logic_error("triangulate: constraint flips stalled");
+        continue;
+      }
+      stalled = 0;
+      // T = (p1, uu, ww), N = (p2, ww, uu)  ->  T = (p1, uu, p2), N = (p2, ww, p1)
+      tris[t] = {{p1, uu, p2}, {N.n[next3(j)], n, T.n[prev3(i)]}, {N.c[next3(j)], -1, T.c[prev3(i)]}};
+      tris[n] = {{p2, ww, p1}, {T.n[next3(i)], t, N.n[prev3(j)]}, {T.c[next3(i)], -1, N.c[prev3(j)]}};
+      replace_neighbor(N.n[next3(j)], n, t);
+      replace_neighbor(T.n[next3(i)], t, n);
+      set_vtri(t);
+      set_vtri(n);
+      if (p1 != from && p1 != to && p2 != from && p2 != to && orient(a, b, p1) * orient(a, b, p2) < 0)
+        queue.push_back({p1, p2});
+    }
+    last_ = vtri[from];
+  }
+};
+
+}  // namespace arrangements::local
