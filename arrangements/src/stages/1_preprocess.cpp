@@ -25,9 +25,60 @@ namespace {
 
 Vec3 without_negative_zero(const Vec3& p) { return {p[0] + 0.0, p[1] + 0.0, p[2] + 0.0}; }
 
-// Collinear iff degenerate in all three axis projections (tritri::projection's test).
+std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser
+  x ^= x >> 30;
+  x *= 0xbf58476d1ce4e5b9ULL;
+  x ^= x >> 27;
+  x *= 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+template <class T>
+std::uint64_t hash3(const std::array<T, 3>& a) {
+  std::uint64_t h = 0;
+  for (const T& x : a) {
+    std::uint64_t b = 0;
+    std::memcpy(&b, &x, sizeof x);
+    h = mix(h ^ b);
+  }
+  return h;
+}
+
+// first[i]: the smallest j with items[j] == items[i]. Items are sorted by (hash, index) in
+// parallel; within a run of equal hashes each item is compared with the distinct items
+// met so far in the run (usually one). Deterministic: the order is total.
+template <class Item>
+std::vector<int> first_equal(const std::vector<Item>& items) {
+  const std::size_t n = items.size();
+  std::vector<std::pair<std::uint64_t, int>> key(n);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { key[i] = {hash3(items[i]), static_cast<int>(i)}; });
+  tbb::parallel_sort(key.begin(), key.end());
+  std::vector<int> first(n);
+  std::vector<int> distinct;
+  for (std::size_t s = 0; s < n;) {
+    std::size_t e = s + 1;
+    while (e < n && key[e].first == key[s].first) ++e;
+    distinct.clear();
+    for (std::size_t a = s; a < e; ++a) {
+      const int i = key[a].second;
+      first[i] = i;
+      for (int d : distinct)
+        if (items[d] == items[i]) {
+          first[i] = d;
+          break;
+        }
+      if (first[i] == i) distinct.push_back(i);
+    }
+    s = e;
+  }
+  return first;
+}
+
+// Collinear iff degenerate in all three axis projections (tritri::projection's test),
+// tried from the dominant plane: usually one orient2d that the filter decides (axis-
+// aligned CAD faces would otherwise start with an exact zero).
 bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
-  return tritri::projection(tritri::DoubleKernel{}, a, b, c).second == 0;
+  return tritri::projection(tritri::DoubleKernel{}, a, b, c, tritri::dominant_plane(a, b, c)).second == 0;
 }
 
 // Sorted, without repeats.
@@ -60,19 +111,11 @@ bool scale_exactly(std::vector<Vec3>& vertices, int k) {
 TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options, PreprocessStats& stats) {
   stats = PreprocessStats{};
 
-  // Distinct positions, in input order: the vertices sorted by position (ties by index,
-  // in parallel), each run of equal positions named by its first vertex.
+  // Distinct positions, in input order: each position named by its first vertex.
   const std::size_t nv = in.vertices.size();
   std::vector<Vec3> at(nv);
   tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) { at[v] = without_negative_zero(in.vertices[v]); });
-  std::vector<int> first_with(nv);  // the first vertex at the same position
-  {
-    std::vector<int> order(nv);
-    std::iota(order.begin(), order.end(), 0);
-    tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) { return at[a] != at[b] ? at[a] < at[b] : a < b; });
-    for (std::size_t i = 0; i < nv; ++i)
-      first_with[order[i]] = i > 0 && at[order[i]] == at[order[i - 1]] ? first_with[order[i - 1]] : order[i];
-  }
+  std::vector<int> first_with = first_equal(at);  // the first vertex at the same position
   std::vector<Vec3> positions;
   std::vector<int> position_of(nv);
   for (std::size_t v = 0; v < nv; ++v) {
@@ -90,8 +133,7 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
   // Kept triangles (corners as position ids), their input label-set indices, and the
   // labels their duplicates add (appended, sorted once at the end: merging k copies with
   // distinct labels stays linear in the number of labels). Degenerate triangles are found
-  // in parallel; duplicates by sorting the corner sets (ties by index), the first of each
-  // run kept.
+  // in parallel; of triangles with the same corner set the first is kept.
   const std::size_t nf = in.triangles.size();
   std::vector<Tri> corners(nf), key(nf);
   std::vector<char> degenerate(nf);
@@ -102,16 +144,11 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
     std::sort(key[t].begin(), key[t].end());
     degenerate[t] = p[0] == p[1] || p[1] == p[2] || p[0] == p[2] || collinear(positions[p[0]], positions[p[1]], positions[p[2]]);
   });
-  std::vector<int> first_copy(nf, -1);  // the first non-degenerate triangle with the same corners
-  {
-    std::vector<int> order;
-    order.reserve(nf);
-    for (std::size_t t = 0; t < nf; ++t)
-      if (!degenerate[t]) order.push_back(static_cast<int>(t));
-    tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] != key[b] ? key[a] < key[b] : a < b; });
-    for (std::size_t i = 0; i < order.size(); ++i)
-      first_copy[order[i]] = i > 0 && key[order[i]] == key[order[i - 1]] ? first_copy[order[i - 1]] : order[i];
-  }
+  // The first non-degenerate triangle with the same corners (degenerate ones get distinct
+  // keys, so they match nothing).
+  for (std::size_t t = 0; t < nf; ++t)
+    if (degenerate[t]) key[t] = {-1, -1, -1 - static_cast<int>(t)};
+  const std::vector<int> first_copy = first_equal(key);
   key = {};
   std::vector<Tri> kept;
   std::vector<int> kept_set;

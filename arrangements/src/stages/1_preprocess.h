@@ -44,7 +44,7 @@
 // survives anyway) give k = 0.
 //
 // Cost: O(#V log #V + #F log #F + total labels of duplicates) (parallel sorts of the
-// positions and of the corner sets), plus one to three exact orient2d per triangle, in
+// positions' and corner sets' hashes), plus one to three exact orient2d per triangle, in
 // parallel; distinct label sets are kept in a std::map. The result does not depend on the
 // number of threads.
 #pragma once
