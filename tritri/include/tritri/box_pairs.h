@@ -93,7 +93,7 @@ void visit_overlapping_pairs(std::vector<Box>& boxes, int workers, const Visit& 
   constexpr std::ptrdiff_t cutoff = 10;  // CGAL's default: below it, boxes are compared pairwise
   constexpr auto closed = CGAL::Box_intersection_d::CLOSED;
   constexpr std::size_t kMinChunk = 2048;         // below this, splitting costs more than it saves
-  if (visit_pairs_in_grid(boxes, visit)) return;  // a uniform grid when that is cheap
+  if (visit_pairs_in_grid(boxes, visit)) return;  // the grid hierarchy when that is cheap
   const std::size_t chunks = std::min<std::size_t>(4 * static_cast<std::size_t>(workers), boxes.size() / kMinChunk);
   if (workers <= 1 || chunks <= 1) {
     CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), report, traits, cutoff, closed);
