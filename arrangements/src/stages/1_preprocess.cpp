@@ -12,7 +12,6 @@
 #include <string>
 #include <unordered_map>
 #include <vector>
-#include <numeric>
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>

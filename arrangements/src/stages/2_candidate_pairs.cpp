@@ -78,22 +78,19 @@ DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F
     if (!settled) {
       const tritri::DoubleKernel k;
       const std::array<Vec3, 3> pa{V[a[0]], V[a[1]], V[a[2]]}, pb{V[b[0]], V[b[1]], V[b[2]]};
-      if (coplanar()) {
-        settled =
-            shares ? tritri::meet_in_shared_in_projection(k, pa, a, pb, b) : tritri::separated_in_projection(k, pa, pb);
-      } else {  // one triangle touching the other's plane without crossing it
+      if (!coplanar()) {  // one triangle touching the other's plane without crossing it
         const tritri::Sign sb[3] = {side(0, 0), side(0, 1), side(0, 2)};
         settled = tritri::touches_only_in_shared(k, pa, a, pb, b, sb);
         if (!settled) {  // a's signs only now: most pairs are settled by b's
           const tritri::Sign sa[3] = {side(1, 0), side(1, 1), side(1, 2)};
           settled = tritri::touches_only_in_shared(k, pb, b, pa, a, sa);
         }
-        // Each straddles the other's plane: projections that meet only in what the two
-        // share (or not at all) still rule out other contact.
-        if (!settled)
-          settled =
-              shares ? tritri::meet_in_shared_in_projection(k, pa, a, pb, b) : tritri::separated_in_projection(k, pa, pb);
       }
+      // Coplanar, or each straddling the other's plane: projections that meet only in what
+      // the two share (or not at all) rule out other contact.
+      if (!settled)
+        settled =
+            shares ? tritri::meet_in_shared_in_projection(k, pa, a, pb, b) : tritri::separated_in_projection(k, pa, pb);
     }
     if (settled) return;
     if (local.chunks.empty() || local.chunks.back().size() == kChunk) {

@@ -136,14 +136,13 @@ SegmentSupport segment_support(const std::vector<Tri>& F, const PairIntersection
 // Where point x (in t's plane) lies in closed triangle t, which has orientation
 // `orientation` != 0 in `plane`. A vertex of t is recognised by its id; a point at a
 // vertex's position with another id cannot occur (points are deduplicated) and is
-// reported Outside. The three edge signs are first asked of a filter on x's certified
-// box (tritri::orient2d_bounded: a few flops, decides unless x is near the edge's line);
+// reported Outside. The three edge signs are first asked of a filter on `box`, x's
+// certified box (tritri::box_bounds; tritri::orient2d_bounded: a few flops, decides unless x is near the edge's line);
 // only the undecided ones go to side_of_line.
 Location locate(const std::vector<tritri::ImplicitPoint>& P, const Tri& t, tritri::Plane plane, int orientation,
-                int x) {
+                int x, const tritri::BoxBounds& box) {
   for (int k = 0; k < 3; ++k)
     if (t[k] == x) return Location::vertex(k);
-  const tritri::BoxBounds box = tritri::box_bounds(P[x]);
   int s[3];
   for (int k = 0; k < 3; ++k) {
     s[k] = tritri::orient2d_bounded(P[t[k]].approx(), P[t[(k + 1) % 3]].approx(), box, plane);
@@ -215,7 +214,7 @@ void share_coplanar(const std::vector<Vec3>& V, const std::vector<Tri>& F, Inter
       const tritri::BoxBounds b = tritri::box_bounds(g.points[x]);
       bool apart = false;
       for (int c = 0; c < 3; ++c) apart = apart || b[c].hi < lo[c] || b[c].lo > hi[c];
-      where[i] = apart ? Location::outside() : locate(g.points, tri, plane, orientation, x);
+      where[i] = apart ? Location::outside() : locate(g.points, tri, plane, orientation, x, b);
       if (!ids[i].second) continue;
       if (where[i].kind == Location::Interior)
         a.inside.push_back(x);

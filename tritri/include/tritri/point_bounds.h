@@ -68,29 +68,28 @@ inline constexpr double kFilterGamma = 0x1p-53 * (1.0 + 0x1p-20);  // per roundi
 
 }  // namespace detail
 
-inline XBounds x_bounds(const ImplicitPoint& p) {
-  if (p.is_explicit()) return {p.approx()[0], p.approx()[0]};
+namespace detail {
+
+// An interval that certainly contains coordinate k (0, 1, 2: x, y, z) of p.
+inline XBounds coordinate_bounds(const ImplicitPoint& p, int k) {
+  if (p.is_explicit()) return {p.approx()[k], p.approx()[k]};
   const auto& f = p.filtered();
   const auto& d = ImplicitPoint::rounding_depth(p.kind());
-  return detail::quotient_bounds(f.x.v, f.x.perm * (d.x.depth * detail::kFilterGamma), f.w.v,
-                                 f.w.perm * (d.w.depth * detail::kFilterGamma));
+  const FilteredValue& c = k == 0 ? f.x : (k == 1 ? f.y : f.z);
+  const double depth = k == 0 ? d.x.depth : (k == 1 ? d.y.depth : d.z.depth);
+  return quotient_bounds(c.v, c.perm * (depth * kFilterGamma), f.w.v, f.w.perm * (d.w.depth * kFilterGamma));
 }
+
+}  // namespace detail
+
+inline XBounds x_bounds(const ImplicitPoint& p) { return detail::coordinate_bounds(p, 0); }
 
 // A box that certainly contains p: x_bounds for each coordinate (explicit points: the
 // point itself). Infinite ends where the filtered coordinates cannot bound the point.
 using BoxBounds = std::array<XBounds, 3>;
 
 inline BoxBounds box_bounds(const ImplicitPoint& p) {
-  if (p.is_explicit()) {
-    const auto& c = p.approx();
-    return {XBounds{c[0], c[0]}, XBounds{c[1], c[1]}, XBounds{c[2], c[2]}};
-  }
-  const auto& f = p.filtered();
-  const auto& d = ImplicitPoint::rounding_depth(p.kind());
-  const double ew = f.w.perm * (d.w.depth * detail::kFilterGamma);
-  return {detail::quotient_bounds(f.x.v, f.x.perm * (d.x.depth * detail::kFilterGamma), f.w.v, ew),
-          detail::quotient_bounds(f.y.v, f.y.perm * (d.y.depth * detail::kFilterGamma), f.w.v, ew),
-          detail::quotient_bounds(f.z.v, f.z.perm * (d.z.depth * detail::kFilterGamma), f.w.v, ew)};
+  return {detail::coordinate_bounds(p, 0), detail::coordinate_bounds(p, 1), detail::coordinate_bounds(p, 2)};
 }
 
 // The sign of orient2d(a, b, x) in `plane` (tritri::orient2d's convention) that holds for
