@@ -78,7 +78,7 @@ struct GridRun {
 };
 
 GridRun run_grid(const Soup& s, int threads) {
-  const std::vector<Box> boxes = triangle_boxes(s.V, s.F);
+  const std::vector<Box> boxes = triangle_boxes(s.V, s.V, s.F);
   GridRun run;
   std::mutex mutex;
   tbb::task_arena arena(threads);

@@ -4,13 +4,18 @@
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>
+#include <tbb/parallel_for.h>
 
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <span>
 #include <string>
+#include <type_traits>
 
 #include "arrangements/thread_count.h"
+#include "models/double_model.h"
+#include "models/exact_model.h"
 #include "stages/1_preprocess.h"
 #include "stages/2_candidate_pairs.h"
 #include "stages/3_classify_pairs.h"
@@ -20,14 +25,34 @@
 #include "support/process_usage.h"
 
 namespace arrangements {
+namespace {
 
-ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& options, PipelineInternals* keep) {
+// The model's output mesh as the public one: the same for doubles (implicit points),
+// rationals for the exact model.
+OutputMesh public_mesh(OutputMesh&& mesh) { return std::move(mesh); }
+ExactOutputMesh public_mesh(BasicOutputMesh<ExactModel::Point>&& mesh) {
+  ExactOutputMesh out;
+  out.vertices.resize(mesh.vertices.size());
+  tbb::parallel_for(std::size_t{0}, mesh.vertices.size(),
+                    [&](std::size_t i) { out.vertices[i] = ExactModel::to_input(mesh.vertices[i]); });
+  mesh.vertices = {};
+  out.triangles = std::move(mesh.triangles);
+  out.source = std::move(mesh.source);
+  out.label_set = std::move(mesh.label_set);
+  out.label_sets = std::move(mesh.label_sets);
+  return out;
+}
+
+// The stages for point model M; keep (double model only) receives the soup and graph.
+template <class M, class Result>
+Result run_stages(const BasicTriangleSoup<typename M::Input>& input, const ArrangeOptions& options,
+                  PipelineInternals* keep) {
   if (options.threads > kMaxThreads)  // oneTBB crashes or aborts on huge arenas (thread_count.h)
     throw std::invalid_argument("arrange: threads must be at most " + std::to_string(kMaxThreads) + ", got " +
                                 std::to_string(options.threads));
   const int workers = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, workers);
-  ArrangeResult r;
+  Result r;
   ArrangeStats& s = r.stats;
   s.threads = workers;
   s.classifier = options.classifier == Classifier::Tritri ? "tritri" : "native";
@@ -40,7 +65,7 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
   PreprocessStats pre;
   PreprocessOptions popt;
   popt.scale = options.scale;
-  TriangleSoup soup = preprocess(input, popt, pre);
+  BasicTriangleSoup<typename M::Vertex> soup = preprocess<M>(input, popt, pre);
   s.merged_vertices = pre.merged_vertices;
   s.removed_degenerate = pre.removed_degenerate;
   s.removed_duplicate = pre.removed_duplicate;
@@ -48,7 +73,7 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
 
   // Stage 2: the pairs to classify (overlapping bounding boxes, exact early-outs).
   t0 = std::chrono::steady_clock::now();
-  DetectedPairs detected = detect_pairs(soup.vertices, soup.triangles, workers, soup.polygon);
+  BasicDetectedPairs<M> detected = detect_pairs<M>(soup.vertices, soup.triangles, workers, soup.polygon);
   s.candidate_pairs = detected.box_pairs;
   s.classified_pairs = detected.pairs.size();
   s.t_detect_s = seconds_since(t0);
@@ -58,12 +83,14 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
   // the next stage has consumed it (peak memory).
   t0 = std::chrono::steady_clock::now();
   tritri::PredicateCounts counts;
-  PairRecords records = classify_pairs(soup.vertices, soup.triangles, detected.pairs, options.classifier,
-                                       options.count_predicates ? &counts : nullptr, detected.planes);
-  detected = DetectedPairs{};
+  PairRecords records =
+      classify_pairs<M>(soup.vertices, soup.triangles, detected.pairs, options.classifier,
+                        options.count_predicates ? &counts : nullptr,
+                        std::span<const typename M::PlaneCache>(detected.planes));
+  detected = BasicDetectedPairs<M>{};
   s.orient3d_calls = counts.orient3d;
   s.orient2d_calls = counts.orient2d;
-  IntersectionGraph graph = build_intersection_graph(soup.vertices, soup.triangles, records);
+  auto graph = build_intersection_graph<M>(soup.vertices, soup.triangles, records);
   records = PairRecords{};
   s.t_classify_s = seconds_since(t0);
   s.intersecting_pairs = graph.intersecting_pairs;
@@ -75,9 +102,9 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
   // Stage 5: triangulate every cut triangle; the result is the output mesh.
   t0 = std::chrono::steady_clock::now();
   TriangulationInfo info;
-  r.mesh = triangulate(soup, graph, pre.scale_exponent, info);
+  r.mesh = public_mesh(triangulate<M>(soup, graph, pre.scale_exponent, info));
   s.tpi = info.new_tpi;
-  if (!keep) graph = IntersectionGraph{};
+  if (!keep) graph = {};
   s.t_triangulate_s = seconds_since(t0);
 
   // Output counts (the writers are the caller's: arrangements/write_mesh.h).
@@ -89,23 +116,23 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
   s.euler = c.euler;
   s.t_output_s = seconds_since(t0);
 
-  if (keep) {
-    keep->soup = std::move(soup);
-    keep->graph = std::move(graph);
+  if constexpr (std::is_same_v<M, DoubleModel>) {
+    if (keep) {
+      keep->soup = std::move(soup);
+      keep->graph = std::move(graph);
+    }
   }
   s.t_total_s = seconds_since(start);
   s.peak_rss_mb = peak_rss_mb();
   return r;
 }
 
-void validate_soup(const TriangleSoup& in) {
+// The checks of validate_soup that do not depend on the coordinates.
+template <class Soup>
+void validate_indices(const Soup& in) {
   const std::size_t nf = in.triangles.size();
   if (in.label_set.size() != nf || in.source.size() != nf || (!in.polygon.empty() && in.polygon.size() != nf))
     throw std::invalid_argument("arrange: label_set, source (and polygon) must have one entry per triangle");
-  for (std::size_t v = 0; v < in.vertices.size(); ++v)
-    for (double c : in.vertices[v])
-      if (!std::isfinite(c))
-        throw std::invalid_argument("arrange: vertex " + std::to_string(v) + " has a non-finite coordinate");
   const long long nv = static_cast<long long>(in.vertices.size());
   const long long ns = static_cast<long long>(in.label_sets.size());
   for (std::size_t t = 0; t < nf; ++t) {
@@ -119,13 +146,42 @@ void validate_soup(const TriangleSoup& in) {
   }
 }
 
+}  // namespace
+
+ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& options, PipelineInternals* keep) {
+  return run_stages<DoubleModel, ArrangeResult>(input, options, keep);
+}
+
+ExactArrangeResult run_pipeline(const ExactTriangleSoup& input, const ArrangeOptions& options) {
+  return run_stages<ExactModel, ExactArrangeResult>(input, options, nullptr);
+}
+
+void validate_soup(const TriangleSoup& in) {
+  validate_indices(in);
+  for (std::size_t v = 0; v < in.vertices.size(); ++v)
+    for (double c : in.vertices[v])
+      if (!std::isfinite(c))
+        throw std::invalid_argument("arrange: vertex " + std::to_string(v) + " has a non-finite coordinate");
+}
+
+void validate_soup(const ExactTriangleSoup& in) { validate_indices(in); }
+
 ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) {
   validate_soup(input);
   return run_pipeline(input, options, nullptr);
 }
 
+ExactArrangeResult arrange(const ExactTriangleSoup& input, const ArrangeOptions& options) {
+  validate_soup(input);
+  return run_pipeline(input, options);
+}
+
 ArrangeResult detail::arrange_validated(const TriangleSoup& input, const ArrangeOptions& options) {
   return run_pipeline(input, options, nullptr);
+}
+
+ExactArrangeResult detail::arrange_validated(const ExactTriangleSoup& input, const ArrangeOptions& options) {
+  return run_pipeline(input, options);
 }
 
 void add_write_time(ArrangeStats& s, double seconds) {

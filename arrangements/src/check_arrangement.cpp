@@ -15,12 +15,15 @@
 #include <tritri/implicit_kernel.h>
 #include <tritri/projection.h>
 
+#include "models/exact_model.h"
+
 namespace arrangements {
 namespace {
 
 using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int, CGAL::Box_intersection_d::ID_EXPLICIT>;
 
-std::string describe(const OutputMesh& m, int i, int j, const std::string& what) {
+template <class Mesh>
+std::string describe(const Mesh& m, int i, int j, const std::string& what) {
   auto tri = [&](int t) {
     std::string s = "triangle " + std::to_string(t) + " (" + std::to_string(m.triangles[t][0]) + ", " +
                     std::to_string(m.triangles[t][1]) + ", " + std::to_string(m.triangles[t][2]) + ")";
@@ -38,22 +41,13 @@ std::string points_of(const tritri::Result& r) {
   return s;
 }
 
-}  // namespace
-
-ArrangementCheck check_arrangement(const OutputMesh& mesh, std::size_t max_reported) {
+// The check on points P (kernel K) with conservative boxes [lo, hi] per vertex.
+template <class K, class Mesh>
+ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Point>& P,
+                              const std::vector<std::array<double, 3>>& lo,
+                              const std::vector<std::array<double, 3>>& hi, std::size_t max_reported) {
   ArrangementCheck out;
-  const auto& P = mesh.vertices;
   const auto& F = mesh.triangles;
-  // Conservative boxes: to_double is correctly rounded, so the exact coordinate lies
-  // within one ulp of it.
-  std::vector<std::array<double, 3>> lo(P.size()), hi(P.size());
-  tbb::parallel_for(std::size_t{0}, P.size(), [&](std::size_t v) {
-    const auto d = tritri::to_double(P[v]);
-    for (int k = 0; k < 3; ++k) {
-      lo[v][k] = std::nextafter(d[k], -std::numeric_limits<double>::infinity());
-      hi[v][k] = std::nextafter(d[k], std::numeric_limits<double>::infinity());
-    }
-  });
   std::vector<Box> boxes;
   boxes.reserve(F.size());
   for (std::size_t t = 0; t < F.size(); ++t) {
@@ -83,7 +77,7 @@ ArrangementCheck check_arrangement(const OutputMesh& mesh, std::size_t max_repor
   tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
     const Tri& f = F[t];
     bool degenerate = f[0] == f[1] || f[1] == f[2] || f[0] == f[2];
-    if (!degenerate) degenerate = tritri::projection(tritri::ImplicitKernel{}, P[f[0]], P[f[1]], P[f[2]]).second == 0;
+    if (!degenerate) degenerate = tritri::projection(K{}, P[f[0]], P[f[1]], P[f[2]]).second == 0;
     if (degenerate) report(out.degenerate_triangles, "triangle " + std::to_string(t) + " is degenerate");
   });
   tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
@@ -97,7 +91,7 @@ ArrangementCheck check_arrangement(const OutputMesh& mesh, std::size_t max_repor
       return;
     }
     const tritri::Result r =
-        tritri::classify<tritri::ImplicitKernel>(P[a[0]], P[a[1]], P[a[2]], P[b[0]], P[b[1]], P[b[2]]);
+        tritri::classify<K>(P[a[0]], P[a[1]], P[a[2]], P[b[0]], P[b[1]], P[b[2]]);
     if (r.degenerate) return;  // reported above
     int on_shared = 0;
     for (const auto& p : r.points) {
@@ -115,6 +109,33 @@ ArrangementCheck check_arrangement(const OutputMesh& mesh, std::size_t max_repor
       report(out.violations, describe(mesh, i, j, "unexpected intersection segments"));
   });
   return out;
+}
+
+}  // namespace
+
+ArrangementCheck check_arrangement(const OutputMesh& mesh, std::size_t max_reported) {
+  const auto& P = mesh.vertices;
+  // Conservative boxes: to_double is correctly rounded, so the exact coordinate lies
+  // within one ulp of it.
+  std::vector<std::array<double, 3>> lo(P.size()), hi(P.size());
+  tbb::parallel_for(std::size_t{0}, P.size(), [&](std::size_t v) {
+    const auto d = tritri::to_double(P[v]);
+    for (int k = 0; k < 3; ++k) {
+      lo[v][k] = std::nextafter(d[k], -std::numeric_limits<double>::infinity());
+      hi[v][k] = std::nextafter(d[k], std::numeric_limits<double>::infinity());
+    }
+  });
+  return check_points<tritri::ImplicitKernel>(mesh, P, lo, hi, max_reported);
+}
+
+ArrangementCheck check_arrangement(const ExactOutputMesh& mesh, std::size_t max_reported) {
+  std::vector<ExactModel::Point> P(mesh.vertices.size());
+  std::vector<std::array<double, 3>> lo(P.size()), hi(P.size());
+  tbb::parallel_for(std::size_t{0}, P.size(), [&](std::size_t v) {
+    P[v] = ExactModel::vertex(mesh.vertices[v]);
+    ExactModel::bounds(P[v], lo[v], hi[v]);
+  });
+  return check_points<ExactModel::Kernel>(mesh, P, lo, hi, max_reported);
 }
 
 }  // namespace arrangements

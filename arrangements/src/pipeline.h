@@ -21,4 +21,7 @@ struct PipelineInternals {
 
 ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& options, PipelineInternals* keep);
 
+// The exact path (ExactModel): the same stages on rational points.
+ExactArrangeResult run_pipeline(const ExactTriangleSoup& input, const ArrangeOptions& options);
+
 }  // namespace arrangements

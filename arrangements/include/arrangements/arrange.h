@@ -5,14 +5,18 @@
 // triangulation into the output mesh. The command-line tool `arrange`, the comparison
 // tool `tritri-compare`, the Eigen API and the Python module are layers over it.
 //
-// Inputs:  input   a TriangleSoup; checked here, once (validate_soup below); the stages
-//                  then assume it
+// Inputs:  input   a TriangleSoup (double coordinates: the fast path, new points are
+//                  implicit) or an ExactTriangleSoup (rational coordinates: every point
+//                  is a rational, CGAL::Epeck; for re-arranging an exact arrangement,
+//                  or any rational input); checked here, once (validate_soup below); the
+//                  stages then assume it
 //          options classifier, threads (<= 0: all cores; at most kMaxThreads, see
 //                  thread_count.h, else std::invalid_argument; the caller's TBB arena
 //                  limit also applies), scale (exact power-of-two scaling by the
-//                  preprocessing), count_predicates (count the classification stage's
+//                  preprocessing; double input only, ignored for exact input), count_predicates (count the classification stage's
 //                  orient3d / orient2d calls)
-// Output:  ArrangeResult: the output mesh (in the input's coordinates, also with scale:
+// Output:  ArrangeResult (ExactArrangeResult for exact input, its vertices rationals):
+//          the output mesh (in the input's coordinates, also with scale:
 //          its points are rebuilt from the unscaled defining points, exactly) and the
 //          statistics (counts and stage times; arrange_stats.h lists them). Of those,
 //          t_load_s (0 here) and writing the output are the caller's to add
@@ -44,23 +48,29 @@ struct ArrangeOptions {
   bool count_predicates = false;  // fill orient3d_calls / orient2d_calls (classification)
 };
 
-struct ArrangeResult {
-  OutputMesh mesh;
+template <class Mesh>
+struct BasicArrangeResult {
+  Mesh mesh;
   ArrangeStats stats;
 };
+using ArrangeResult = BasicArrangeResult<OutputMesh>;
+using ExactArrangeResult = BasicArrangeResult<ExactOutputMesh>;
 
 ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options);
+ExactArrangeResult arrange(const ExactTriangleSoup& input, const ArrangeOptions& options);
 
 // validate_soup(soup): throws std::invalid_argument, naming the first violation, unless
-// every coordinate is finite, every index is in range (triangles into vertices, label_set
+// every coordinate is finite (exact soups: always), every index is in range (triangles into vertices, label_set
 // into label_sets), and label_set, source and polygon (when not empty) have one entry per
 // triangle. Cost: O(#V + #F).
 void validate_soup(const TriangleSoup& soup);
+void validate_soup(const ExactTriangleSoup& soup);
 
 namespace detail {
 // arrange() without validate_soup, for entry points that have checked the same facts at
 // their own boundary (the file loader, arrange_eigen.h): every fact is checked once.
 ArrangeResult arrange_validated(const TriangleSoup& input, const ArrangeOptions& options);
+ExactArrangeResult arrange_validated(const ExactTriangleSoup& input, const ArrangeOptions& options);
 }  // namespace detail
 
 }  // namespace arrangements

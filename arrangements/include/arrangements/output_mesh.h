@@ -1,9 +1,11 @@
 // arrangements/output_mesh.h
 //
-// OutputMesh: the arrangement as it is written out. Triangles meet only at shared
-// vertices and shared edges.
-//   vertices    the referenced points only (exact: explicit input vertices, LPIs, TPIs),
-//               in first-use order of `triangles`
+// OutputMesh / ExactOutputMesh: the arrangement as it is written out. Triangles meet
+// only at shared vertices and shared edges.
+//   vertices    the referenced points only, in first-use order of `triangles`, exact:
+//               OutputMesh (double input): tritri::ImplicitPoint, explicit input
+//               vertices, LPIs and TPIs over them (never rounded);
+//               ExactOutputMesh (exact input, ExactTriangleSoup): rational coordinates
 //   triangles   indices into `vertices`, each oriented like the input triangle it lies in
 //   source      per triangle: the index of the input triangle it lies in, in the input
 //               files' concatenated triangle lists (an n-corner polygon face is n - 2
@@ -24,12 +26,16 @@
 
 namespace arrangements {
 
-struct OutputMesh {
-  std::vector<tritri::ImplicitPoint> vertices;
+template <class Point>
+struct BasicOutputMesh {
+  std::vector<Point> vertices;
   std::vector<Tri> triangles;
   std::vector<std::int64_t> source;
   std::vector<int> label_set;
   std::vector<LabelSet> label_sets;
 };
+
+using OutputMesh = BasicOutputMesh<tritri::ImplicitPoint>;
+using ExactOutputMesh = BasicOutputMesh<ExactVec3>;
 
 }  // namespace arrangements

@@ -1,4 +1,4 @@
-// Stages 2-3: exact vertex merge, degenerate / duplicate triangle removal, optional
+// Stage 1: exact vertex merge, degenerate / duplicate triangle removal, optional
 // power-of-two scaling (see preprocess.h).
 #include "stages/1_preprocess.h"
 
@@ -16,41 +16,26 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
-#include <tritri/double_kernel.h>
-#include <tritri/projection.h>
+#include "models/double_model.h"
+#include "models/exact_model.h"
 
 namespace arrangements {
 namespace {
 
-Vec3 without_negative_zero(const Vec3& p) { return {p[0] + 0.0, p[1] + 0.0, p[2] + 0.0}; }
-
-std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser
-  x ^= x >> 30;
-  x *= 0xbf58476d1ce4e5b9ULL;
-  x ^= x >> 27;
-  x *= 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-template <class T>
-std::uint64_t hash3(const std::array<T, 3>& a) {
+std::uint64_t hash_corners(const Tri& a) {
   std::uint64_t h = 0;
-  for (const T& x : a) {
-    std::uint64_t b = 0;
-    std::memcpy(&b, &x, sizeof x);
-    h = mix(h ^ b);
-  }
+  for (int x : a) h = DoubleModel::mix(h ^ static_cast<std::uint32_t>(x));
   return h;
 }
 
 // first[i]: the smallest j with items[j] == items[i]. Items are sorted by (hash, index) in
 // parallel; within a run of equal hashes each item is compared with the distinct items
 // met so far in the run (usually one). Deterministic: the order is total.
-template <class Item>
-std::vector<int> first_equal(const std::vector<Item>& items) {
+template <class Item, class Hash>
+std::vector<int> first_equal(const std::vector<Item>& items, Hash hash) {
   const std::size_t n = items.size();
   std::vector<std::pair<std::uint64_t, int>> key(n);
-  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { key[i] = {hash3(items[i]), static_cast<int>(i)}; });
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { key[i] = {hash(items[i]), static_cast<int>(i)}; });
   tbb::parallel_sort(key.begin(), key.end());
   std::vector<int> first(n);
   std::vector<int> distinct;
@@ -76,8 +61,9 @@ std::vector<int> first_equal(const std::vector<Item>& items) {
 // Collinear iff degenerate in all three axis projections (tritri::projection's test),
 // tried from the dominant plane: usually one orient2d that the filter decides (axis-
 // aligned CAD faces would otherwise start with an exact zero).
-bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
-  return tritri::projection(tritri::DoubleKernel{}, a, b, c, tritri::dominant_plane(a, b, c)).second == 0;
+template <class M>
+bool collinear(const typename M::Vertex& a, const typename M::Vertex& b, const typename M::Vertex& c) {
+  return M::projection(a, b, c).second == 0;
 }
 
 // Sorted, without repeats.
@@ -107,15 +93,19 @@ bool scale_exactly(std::vector<Vec3>& vertices, int k) {
 
 }  // namespace
 
-TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options, PreprocessStats& stats) {
+template <class M>
+BasicTriangleSoup<typename M::Vertex> preprocess(const BasicTriangleSoup<typename M::Input>& in,
+                                                 const PreprocessOptions& options, PreprocessStats& stats) {
+  using Vertex = typename M::Vertex;
   stats = PreprocessStats{};
 
   // Distinct positions, in input order: each position named by its first vertex.
   const std::size_t nv = in.vertices.size();
-  std::vector<Vec3> at(nv);
-  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) { at[v] = without_negative_zero(in.vertices[v]); });
-  std::vector<int> first_with = first_equal(at);  // the first vertex at the same position
-  std::vector<Vec3> positions;
+  std::vector<Vertex> at(nv);
+  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) { at[v] = M::vertex(in.vertices[v]); });
+  // the first vertex at the same position
+  std::vector<int> first_with = first_equal(at, [](const Vertex& p) { return M::hash(p); });
+  std::vector<Vertex> positions;
   std::vector<int> position_of(nv);
   for (std::size_t v = 0; v < nv; ++v) {
     if (first_with[v] == static_cast<int>(v)) {
@@ -141,13 +131,13 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
     const Tri p = {position_of[tri[0]], position_of[tri[1]], position_of[tri[2]]};
     corners[t] = key[t] = p;
     std::sort(key[t].begin(), key[t].end());
-    degenerate[t] = p[0] == p[1] || p[1] == p[2] || p[0] == p[2] || collinear(positions[p[0]], positions[p[1]], positions[p[2]]);
+    degenerate[t] = p[0] == p[1] || p[1] == p[2] || p[0] == p[2] || collinear<M>(positions[p[0]], positions[p[1]], positions[p[2]]);
   });
   // The first non-degenerate triangle with the same corners (degenerate ones get distinct
   // keys, so they match nothing).
   for (std::size_t t = 0; t < nf; ++t)
     if (degenerate[t]) key[t] = {-1, -1, -1 - static_cast<int>(t)};
-  const std::vector<int> first_copy = first_equal(key);
+  const std::vector<int> first_copy = first_equal(key, hash_corners);
   key = {};
   std::vector<Tri> kept;
   std::vector<int> kept_set;
@@ -179,7 +169,7 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
   }
 
   // Output vertices and label sets in first-use order.
-  TriangleSoup out;
+  BasicTriangleSoup<Vertex> out;
   std::vector<int> out_vertex(positions.size(), -1);
   std::vector<int> out_set_of_input_set(in.label_sets.size(), -1);
   std::map<LabelSet, int> out_set_by_content;  // equal sets are stored once
@@ -217,14 +207,20 @@ TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options
   out.polygon = std::move(kept_polygon);
   stats.unreferenced_vertices = positions.size() - out.vertices.size();
 
-  if (options.scale) {
-    double max_abs = 0;
-    for (const Vec3& p : out.vertices)
-      for (double c : p) max_abs = std::max(max_abs, std::fabs(c));
-    stats.scale_exponent = scale_exponent_for(max_abs);
-    if (!scale_exactly(out.vertices, stats.scale_exponent)) stats.scale_exponent = 0;  // valid input: kept as is
+  if constexpr (M::kCanScale) {
+    if (options.scale) {
+      double max_abs = 0;
+      for (const Vec3& p : out.vertices)
+        for (double c : p) max_abs = std::max(max_abs, std::fabs(c));
+      stats.scale_exponent = scale_exponent_for(max_abs);
+      if (!scale_exactly(out.vertices, stats.scale_exponent)) stats.scale_exponent = 0;  // valid input: kept as is
+    }
   }
   return out;
 }
+
+template TriangleSoup preprocess<DoubleModel>(const TriangleSoup&, const PreprocessOptions&, PreprocessStats&);
+template BasicTriangleSoup<ExactModel::Vertex> preprocess<ExactModel>(const ExactTriangleSoup&,
+                                                                      const PreprocessOptions&, PreprocessStats&);
 
 }  // namespace arrangements

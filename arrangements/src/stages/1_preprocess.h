@@ -3,10 +3,13 @@
 // Stage 1 of the pipeline: clean a TriangleSoup exactly, and optionally scale it by a
 // power of two.
 //
-// TriangleSoup preprocess(in, options, stats)
+// preprocess<M>(in, options, stats), for a point model M (models/point_model.h): from
+// the input soup (M::Input coordinates) to the stages' soup (M::Vertex);
+// preprocess(in, options, stats) on a TriangleSoup is preprocess<DoubleModel>.
 //   in       a valid soup (validate_soup in arrangements/arrange.h: finite coordinates,
 //            indices in range, per-triangle lists of the right size; not checked again)
-//   options  .scale: multiply every coordinate by 2^k (below)
+//   options  .scale: multiply every coordinate by 2^k (below; double models only: exact
+//            input is never scaled, scale_exponent stays 0)
 // returns the soup with
 //   vertices    the distinct positions used by a kept triangle, in first-use order (the
 //               order in which the kept triangles, in order, first name them); identical
@@ -53,6 +56,7 @@
 
 #include "arrangements/input_error.h"
 #include "arrangements/triangle_soup.h"
+#include "models/double_model.h"
 
 namespace arrangements {
 
@@ -68,6 +72,12 @@ struct PreprocessStats {
   int scale_exponent = 0;
 };
 
-TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options, PreprocessStats& stats);
+template <class M>
+BasicTriangleSoup<typename M::Vertex> preprocess(const BasicTriangleSoup<typename M::Input>& in,
+                                                 const PreprocessOptions& options, PreprocessStats& stats);
+
+inline TriangleSoup preprocess(const TriangleSoup& in, const PreprocessOptions& options, PreprocessStats& stats) {
+  return preprocess<DoubleModel>(in, options, stats);
+}
 
 }  // namespace arrangements

@@ -8,13 +8,13 @@
 
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include <tritri/box_pairs.h>
-#include <tritri/double_kernel.h>
-#include <tritri/plane_filter.h>
 #include <tritri/shared_vertices.h>
 
 #include "arrangements/thread_count.h"
+#include "models/exact_model.h"
 
 namespace arrangements {
 namespace {
@@ -24,18 +24,39 @@ void check_threads(int threads) {
     throw std::invalid_argument("candidate_pairs: threads must be at most " + std::to_string(kMaxThreads));
 }
 
+// Every vertex's box: the vertices themselves for doubles (no copy), certified intervals
+// otherwise.
+template <class M>
+struct VertexBoxes {
+  std::vector<Vec3> lo, hi;
+  std::span<const Vec3> lo_span, hi_span;
+  explicit VertexBoxes(const std::vector<typename M::Vertex>& V) {
+    if constexpr (std::is_same_v<typename M::Vertex, Vec3>) {
+      lo_span = hi_span = V;
+    } else {
+      lo.resize(V.size());
+      hi.resize(V.size());
+      for (std::size_t v = 0; v < V.size(); ++v) M::bounds(V[v], lo[v], hi[v]);
+      lo_span = lo;
+      hi_span = hi;
+    }
+  }
+};
+
 }  // namespace
 
-DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F, int threads,
-                           std::span<const std::int64_t> polygon) {
+template <class M>
+BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, const std::vector<Tri>& F, int threads,
+                                   std::span<const std::int64_t> polygon) {
+  using Vertex = typename M::Vertex;
   check_threads(threads);
-  DetectedPairs out;
-  std::vector<tritri::PlaneFilter>& planes = out.planes;
+  BasicDetectedPairs<M> out;
+  std::vector<typename M::PlaneCache>& planes = out.planes;
   planes.resize(F.size());
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, F.size(),
-                      [&](std::size_t t) { planes[t] = tritri::plane_filter(V[F[t][0]], V[F[t][1]], V[F[t][2]]); });
+                      [&](std::size_t t) { planes[t] = M::plane_cache(V[F[t][0]], V[F[t][1]], V[F[t][2]]); });
   });
 
   // Kept pairs in fixed-size chunks per thread: no doubling slack, and the chunks are freed
@@ -47,7 +68,8 @@ DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F
     std::size_t box_pairs = 0;
   };
   tbb::enumerable_thread_specific<Found> found;
-  tritri::for_each_overlapping_pair(V, F, threads, polygon, [&](int i, int j) {
+  const VertexBoxes<M> boxes(V);
+  tritri::for_each_overlapping_pair(boxes.lo_span, boxes.hi_span, F, threads, polygon, [&](int i, int j) {
     Found& local = found.local();
     ++local.box_pairs;
     const Tri& a = F[i];
@@ -60,7 +82,7 @@ DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F
       if (!have[t][corner]) {
         const Tri& p = t == 0 ? a : b;
         const Tri& o = t == 0 ? b : a;
-        known[t][corner] = tritri::side_of_plane(planes[t == 0 ? i : j], V[p[0]], V[p[1]], V[p[2]], V[o[corner]]);
+        known[t][corner] = M::side_of_plane(planes[t == 0 ? i : j], V[p[0]], V[p[1]], V[p[2]], V[o[corner]]);
         have[t][corner] = true;
       }
       return known[t][corner];
@@ -76,8 +98,8 @@ DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F
     const bool shares = tritri::detail::shared_corners(a, b, in_b) > 0;
     bool settled = shares ? tritri::meet_only_in_shared_by_sides(a, b, side) : tritri::separated_by_plane(side);
     if (!settled) {
-      const tritri::DoubleKernel k;
-      const std::array<Vec3, 3> pa{V[a[0]], V[a[1]], V[a[2]]}, pb{V[b[0]], V[b[1]], V[b[2]]};
+      const typename M::Kernel k;
+      const std::array<Vertex, 3> pa{V[a[0]], V[a[1]], V[a[2]]}, pb{V[b[0]], V[b[1]], V[b[2]]};
       if (!coplanar()) {  // one triangle touching the other's plane without crossing it
         const tritri::Sign sb[3] = {side(0, 0), side(0, 1), side(0, 2)};
         settled = tritri::touches_only_in_shared(k, pa, a, pb, b, sb);
@@ -114,6 +136,12 @@ DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F
   arena.execute([&] { tbb::parallel_sort(out.pairs.begin(), out.pairs.end()); });
   return out;
 }
+
+template DetectedPairs detect_pairs<DoubleModel>(const std::vector<Vec3>&, const std::vector<Tri>&, int,
+                                                 std::span<const std::int64_t>);
+template BasicDetectedPairs<ExactModel> detect_pairs<ExactModel>(const std::vector<ExactModel::Vertex>&,
+                                                                 const std::vector<Tri>&, int,
+                                                                 std::span<const std::int64_t>);
 
 std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F, int threads,
                                                  std::span<const std::int64_t> polygon) {

@@ -3,7 +3,8 @@
 // Stage 2 of the pipeline: the pairs of triangles that may intersect beyond what they
 // share, found and filtered in one pass, without a list of every box-overlapping pair.
 //
-// DetectedPairs detect_pairs(V, F, threads, polygon)
+// detect_pairs<M>(V, F, threads, polygon), for a point model M (models/point_model.h);
+// detect_pairs(V, F, ...) on double vertices is detect_pairs<DoubleModel>.
 //   V, F     the preprocessed soup's vertices and triangles (stage 1: finite, in range,
 //            vertices merged, so equal indices are equal points and no triangle is
 //            degenerate)
@@ -13,8 +14,8 @@
 //            meet only in shared corners and edges, share an id >= 0; never paired)
 // returns `pairs`: every pair (i, j), i < j, whose closed bounding boxes overlap and that
 // the exact early-outs below do not settle, sorted, each once; `box_pairs`: how many pairs
-// had overlapping boxes (the stat candidate_pairs); `planes`: one tritri::PlaneFilter per
-// triangle (stage 3 reuses them).
+// had overlapping boxes (the stat candidate_pairs); `planes`: one M::PlaneCache per
+// triangle (DoubleModel: tritri::PlaneFilter; stage 3 reuses them).
 // Early-outs, as each box pair is found (tritri::for_each_overlapping_pair, in parallel):
 //   - neighbours (a shared vertex or edge by index) that provably meet only in what they
 //     share: tritri::meet_only_in_shared_by_sides, 1 to 4 plane signs;
@@ -50,17 +51,26 @@
 #include <tritri/plane_filter.h>
 
 #include "arrangements/triangle_soup.h"
+#include "models/double_model.h"
 
 namespace arrangements {
 
-struct DetectedPairs {
-  std::vector<std::pair<int, int>> pairs;   // to classify, sorted
-  std::size_t box_pairs = 0;                // pairs with overlapping boxes
-  std::vector<tritri::PlaneFilter> planes;  // tritri::plane_filter of each triangle, for stage 3
+template <class M>
+struct BasicDetectedPairs {
+  std::vector<std::pair<int, int>> pairs;         // to classify, sorted
+  std::size_t box_pairs = 0;                      // pairs with overlapping boxes
+  std::vector<typename M::PlaneCache> planes;     // M::plane_cache of each triangle, for stage 3
 };
+using DetectedPairs = BasicDetectedPairs<DoubleModel>;
 
-DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F, int threads,
-                           std::span<const std::int64_t> polygon = {});
+template <class M>
+BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, const std::vector<Tri>& F, int threads,
+                                   std::span<const std::int64_t> polygon = {});
+
+inline DetectedPairs detect_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F, int threads,
+                                  std::span<const std::int64_t> polygon = {}) {
+  return detect_pairs<DoubleModel>(V, F, threads, polygon);
+}
 
 std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F, int threads = 0,
                                                  std::span<const std::int64_t> polygon = {});

@@ -8,6 +8,8 @@
 
 #include <tuple>
 
+#include "models/exact_model.h"
+
 namespace arrangements {
 namespace {
 
@@ -17,19 +19,23 @@ int next(int i) { return i == 2 ? 0 : i + 1; }
 int prev(int i) { return i == 0 ? 2 : i - 1; }
 
 // One triangle of the pair.
+template <class P>
 struct Side {
   int tri;
   int id[3];
-  const Vec3* v[3];
+  const P* v[3];
   Plane plane = Plane::XY;  // a projection in which the triangle is not degenerate
   int orientation = 0;      // its orientation there (0 until computed)
 };
 
-// Every predicate goes through the kernel K (whose Point is Vec3).
+// Every predicate goes through the kernel K (whose Point is the vertices' type P).
 template <class K>
 class NativePair {
+  using P = typename K::Point;
+  using Side = arrangements::Side<P>;
+
  public:
-  NativePair(const K& kernel, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+  NativePair(const K& kernel, const std::vector<P>& V, const std::vector<Tri>& F, int ta, int tb,
              PairIntersection& out)
       : k_(kernel), out_(out) {
     for (int k = 0; k < 2; ++k) {
@@ -99,7 +105,7 @@ class NativePair {
   }
 
   // Where a point of triangle o's plane lies in the closed triangle o (Outside: not in it).
-  Location locate_in_triangle(int o, const Vec3& p) {
+  Location locate_in_triangle(int o, const P& p) {
     const Side& t = ensure_projection(o);
     int s[3];
     for (int i = 0; i < 3; ++i) {
@@ -139,8 +145,8 @@ class NativePair {
   void segment_in_plane(int k, int e) {
     const Side& self = s_[k];
     const Side& other = ensure_projection(1 - k);
-    const Vec3& p = *self.v[e];
-    const Vec3& q = *self.v[next(e)];
+    const P& p = *self.v[e];
+    const P& q = *self.v[next(e)];
     int side_of_other[3];
     for (int i = 0; i < 3; ++i) side_of_other[i] = o2d(p, q, *other.v[i], other.plane);
     for (int i = 0; i < 3 && !done(); ++i) {
@@ -158,7 +164,7 @@ class NativePair {
   }
 
   // x collinear with p, q (in the projection): strictly between them?
-  static bool strictly_between(const Vec3& p, const Vec3& q, const Vec3& x, Plane plane) {
+  static bool strictly_between(const P& p, const P& q, const P& x, Plane plane) {
     const int a = plane == Plane::XY ? 0 : (plane == Plane::YZ ? 1 : 2), b = (a + 1) % 3;
     for (int c : {a, b}) {
       if (p[c] < x[c] && x[c] < q[c]) return true;
@@ -213,10 +219,10 @@ class NativePair {
     out_.points.push_back(p);
   }
 
-  int o3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) const {
+  int o3d(const P& a, const P& b, const P& c, const P& d) const {
     return tritri::to_int(k_.orient3d(a, b, c, d));
   }
-  int o2d(const Vec3& a, const Vec3& b, const Vec3& c, Plane p) const {
+  int o2d(const P& a, const P& b, const P& c, Plane p) const {
     return tritri::to_int(k_.orient2d(a, b, c, p));
   }
 
@@ -228,7 +234,7 @@ class NativePair {
 }  // namespace
 
 template <class K>
-bool classify_pair_native(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+bool classify_pair_native(const K& k, const std::vector<typename K::Point>& V, const std::vector<Tri>& F, int ta, int tb,
                           PairIntersection& out) {
   return NativePair<K>(k, V, F, ta, tb, out).run();
 }
@@ -239,5 +245,10 @@ template bool classify_pair_native(const tritri::PlaneCachedKernel&, const std::
                                    int, int, PairIntersection&);
 template bool classify_pair_native(const tritri::CountingKernel<tritri::DoubleKernel>&, const std::vector<Vec3>&,
                                    const std::vector<Tri>&, int, int, PairIntersection&);
+template bool classify_pair_native(const ExactModel::Kernel&, const std::vector<ExactModel::Vertex>&,
+                                   const std::vector<Tri>&, int, int, PairIntersection&);
+template bool classify_pair_native(const tritri::CountingKernel<ExactModel::Kernel>&,
+                                   const std::vector<ExactModel::Vertex>&, const std::vector<Tri>&, int, int,
+                                   PairIntersection&);
 
 }  // namespace arrangements

@@ -9,9 +9,10 @@
 // edges at the lonely vertex may cross A. Then the same for A against B, stopping as soon
 // as two distinct points are known (non-coplanar pairs have at most two).
 //
-// Inputs:  k the predicates: tritri::DoubleKernel, or tritri::CountingKernel over it to
-//          count the calls (the two instantiations; classify_pairs picks one); without k,
-//          DoubleKernel. V vertices, F triangles (no degenerate triangles, vertices merged
+// Inputs:  k the predicates: a point model's kernel (models/point_model.h: DoubleKernel
+//          or its PlaneCachedKernel, ExactModel::Kernel), or tritri::CountingKernel over it
+//          to count the calls (classify_pairs picks one); without k, DoubleKernel. V
+//          vertices (k's points), F triangles (no degenerate triangles, vertices merged
 //          exactly), ta, tb the pair.
 // Output:  out, filled when the triangles intersect beyond what they share in the mesh
 //          (a common vertex or edge alone is not an intersection); returns whether so.
@@ -32,7 +33,7 @@
 namespace arrangements {
 
 template <class K>
-bool classify_pair_native(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+bool classify_pair_native(const K& k, const std::vector<typename K::Point>& V, const std::vector<Tri>& F, int ta, int tb,
                           PairIntersection& out);
 extern template bool classify_pair_native(const tritri::DoubleKernel&, const std::vector<Vec3>&,
                                           const std::vector<Tri>&, int, int, PairIntersection&);

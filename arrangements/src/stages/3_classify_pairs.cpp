@@ -10,12 +10,13 @@
 
 #include "stages/3_classify_native.h"
 #include "stages/3_classify_tritri.h"
+#include "models/exact_model.h"
 
 namespace arrangements {
 namespace {
 
 template <class K>
-bool classify_one(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+bool classify_one(const K& k, const std::vector<typename K::Point>& V, const std::vector<Tri>& F, int ta, int tb,
                   Classifier classifier, PairIntersection& record) {
   switch (classifier) {
     case Classifier::Native:
@@ -31,9 +32,9 @@ bool classify_one(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>
 // (tritri::PlaneCachedKernel: the same exact answers, cheaper). (Neighbours that meet
 // only in what they share, and pairs separated by a plane, usually never get here: stage
 // 2 drops them. The classifiers report nothing for them.)
-template <class K>
-void classify_range(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                    std::span<const tritri::PlaneFilter> planes, const std::vector<std::pair<int, int>>& pairs,
+template <class K, class Cache>
+void classify_range(const K& k, const std::vector<typename K::Point>& V, const std::vector<Tri>& F,
+                    std::span<const Cache> planes, const std::vector<std::pair<int, int>>& pairs,
                     std::size_t begin, std::size_t end, Classifier classifier, PairRecordChunk& found) {
   PairIntersection record;
   for (std::size_t i = begin; i < end; ++i) {
@@ -56,9 +57,11 @@ void classify_range(const K& k, const std::vector<Vec3>& V, const std::vector<Tr
 
 }  // namespace
 
-PairRecords classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F,
+template <class M>
+PairRecords classify_pairs(const std::vector<typename M::Vertex>& V, const std::vector<Tri>& F,
                            const std::vector<std::pair<int, int>>& pairs, Classifier classifier,
-                           tritri::PredicateCounts* counts, std::span<const tritri::PlaneFilter> planes) {
+                           tritri::PredicateCounts* counts, std::span<const typename M::PlaneCache> planes) {
+  using K = typename M::Kernel;
   // Fixed chunks, concatenated in order (the loop tritri's batch API uses too): the
   // output does not depend on scheduling.
   constexpr std::size_t chunk = 2048;
@@ -67,10 +70,10 @@ PairRecords classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F
   PairRecords all(tritri::detail::collect_chunks_in_order<PairRecordChunk>(
       pairs.size(), chunk, [&](std::size_t c, std::size_t begin, std::size_t end, PairRecordChunk& found) {
         if (counts)
-          classify_range(tritri::CountingKernel<tritri::DoubleKernel>(chunk_counts[c]), V, F, {}, pairs, begin, end,
-                         classifier, found);
+          classify_range(tritri::CountingKernel<K>(chunk_counts[c]), V, F, std::span<const typename M::PlaneCache>{},
+                         pairs, begin, end, classifier, found);
         else
-          classify_range(tritri::DoubleKernel{}, V, F, planes, pairs, begin, end, classifier, found);
+          classify_range(K{}, V, F, planes, pairs, begin, end, classifier, found);
       }));
   for (const auto& n : chunk_counts) {
     counts->orient3d += n.orient3d;
@@ -80,5 +83,12 @@ PairRecords classify_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F
   }
   return all;
 }
+
+template PairRecords classify_pairs<DoubleModel>(const std::vector<Vec3>&, const std::vector<Tri>&,
+                                                 const std::vector<std::pair<int, int>>&, Classifier,
+                                                 tritri::PredicateCounts*, std::span<const tritri::PlaneFilter>);
+template PairRecords classify_pairs<ExactModel>(const std::vector<ExactModel::Vertex>&, const std::vector<Tri>&,
+                                                const std::vector<std::pair<int, int>>&, Classifier,
+                                                tritri::PredicateCounts*, std::span<const ExactModel::PlaneCache>);
 
 }  // namespace arrangements

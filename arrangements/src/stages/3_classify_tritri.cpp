@@ -5,10 +5,12 @@
 #include <tritri/double_kernel.h>
 #include <tritri/plane_filter.h>
 
+#include "models/exact_model.h"
+
 namespace arrangements {
 
 template <class K>
-bool classify_pair_tritri(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+bool classify_pair_tritri(const K& k, const std::vector<typename K::Point>& V, const std::vector<Tri>& F, int ta, int tb,
                           PairIntersection& out) {
   const Tri& a = F[ta];
   const Tri& b = F[tb];
@@ -94,5 +96,10 @@ template bool classify_pair_tritri(const tritri::PlaneCachedKernel&, const std::
                                    int, int, PairIntersection&);
 template bool classify_pair_tritri(const tritri::CountingKernel<tritri::DoubleKernel>&, const std::vector<Vec3>&,
                                    const std::vector<Tri>&, int, int, PairIntersection&);
+template bool classify_pair_tritri(const ExactModel::Kernel&, const std::vector<ExactModel::Vertex>&,
+                                   const std::vector<Tri>&, int, int, PairIntersection&);
+template bool classify_pair_tritri(const tritri::CountingKernel<ExactModel::Kernel>&,
+                                   const std::vector<ExactModel::Vertex>&, const std::vector<Tri>&, int, int,
+                                   PairIntersection&);
 
 }  // namespace arrangements

@@ -29,7 +29,7 @@
 namespace arrangements {
 
 template <class K>
-bool classify_pair_tritri(const K& k, const std::vector<Vec3>& V, const std::vector<Tri>& F, int ta, int tb,
+bool classify_pair_tritri(const K& k, const std::vector<typename K::Point>& V, const std::vector<Tri>& F, int ta, int tb,
                           PairIntersection& out);
 extern template bool classify_pair_tritri(const tritri::DoubleKernel&, const std::vector<Vec3>&,
                                           const std::vector<Tri>&, int, int, PairIntersection&);

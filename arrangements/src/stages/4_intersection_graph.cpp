@@ -8,14 +8,10 @@
 #include <numeric>
 #include <type_traits>
 
-#include <tritri/double_kernel.h>
-#include <tritri/implicit_predicates.h>
-#include <tritri/point_bounds.h>
 #include <tritri/location.h>
-#include <tritri/projection.h>
 
-#include "support/auxiliary_point.h"
-#include "support/side_of_line.h"
+#include "models/double_model.h"
+#include "models/exact_model.h"
 
 namespace arrangements {
 namespace {
@@ -62,7 +58,8 @@ void group(std::vector<std::vector<Entry>>& parts, std::size_t keys, std::vector
 // Unique edges, numbered in lexicographic order of (smaller id, larger id): a counting
 // sort by the smaller vertex id, then each vertex's few half-edges sorted (linear time;
 // the same order as sorting all (v0, v1, triangle * 3 + k) triples).
-void build_edges(const std::vector<Tri>& F, IntersectionGraph& g) {
+template <class G>
+void build_edges(const std::vector<Tri>& F, G& g) {
   int nv = 0;
   for (const Tri& t : F) nv = std::max({nv, t[0] + 1, t[1] + 1, t[2] + 1});
   std::vector<int> first(static_cast<std::size_t>(nv) + 1, 0);
@@ -106,9 +103,14 @@ PointName point_name(const std::vector<Tri>& F, const PairIntersection& p, const
   return {0, q.lpi.v[0], q.lpi.v[1], q.lpi.v[2], q.lpi.v[3], q.lpi.v[4]};
 }
 
-tritri::ImplicitPoint make_lpi(const std::vector<Vec3>& V, const std::vector<Tri>& F, const LpiKey& key) {
-  auto at = [&](int id) { return id >= 0 ? V[id] : auxiliary_point(V, F[-1 - id]); };
-  return tritri::ImplicitPoint::lpi(at(key.v[0]), at(key.v[1]), at(key.v[2]), at(key.v[3]), at(key.v[4]));
+template <class M>
+typename M::Point make_lpi(const std::vector<typename M::Vertex>& V, const std::vector<Tri>& F, const LpiKey& key) {
+  auto at = [&](int id) {
+    if (id >= 0) return V[id];
+    const Tri& t = F[-1 - id];
+    return M::auxiliary_point(V[t[0]], V[t[1]], V[t[2]]);
+  };
+  return M::lpi(at(key.v[0]), at(key.v[1]), at(key.v[2]), at(key.v[3]), at(key.v[4]));
 }
 
 // Two planes through the line of segment s of pair p (see SegmentSupport).
@@ -137,20 +139,21 @@ SegmentSupport segment_support(const std::vector<Tri>& F, const PairIntersection
 // `orientation` != 0 in `plane`. A vertex of t is recognised by its id; a point at a
 // vertex's position with another id cannot occur (points are deduplicated) and is
 // reported Outside. The three edge signs are first asked of a filter on `box`, x's
-// certified box (tritri::box_bounds; tritri::orient2d_bounded: a few flops, decides unless x is near the edge's line);
-// only the undecided ones go to side_of_line.
-Location locate(const std::vector<tritri::ImplicitPoint>& P, const Tri& t, tritri::Plane plane, int orientation,
-                int x, const tritri::BoxBounds& box) {
+// certified box (M::box; M::side_bounded: a few flops, decides unless x is near the edge's line);
+// only the undecided ones go to M::side_of_line.
+template <class M>
+Location locate(const std::vector<typename M::Vertex>& V, const std::vector<typename M::Point>& P, const Tri& t,
+                tritri::Plane plane, int orientation, int x, const typename M::Box& box) {
   for (int k = 0; k < 3; ++k)
     if (t[k] == x) return Location::vertex(k);
   int s[3];
   for (int k = 0; k < 3; ++k) {
-    s[k] = tritri::orient2d_bounded(P[t[k]].approx(), P[t[(k + 1) % 3]].approx(), box, plane);
+    s[k] = M::side_bounded(V[t[k]], V[t[(k + 1) % 3]], box, plane);
     if (s[k] != tritri::kUndecided && s[k] * orientation < 0) return Location::outside();
   }
   for (int k = 0; k < 3; ++k) {
     if (s[k] == tritri::kUndecided)
-      s[k] = side_of_line(P[t[k]], P[t[(k + 1) % 3]], P[x], plane, &P[t[(k + 2) % 3]]);
+      s[k] = M::side_of_line(P[t[k]], P[t[(k + 1) % 3]], P[x], plane, &P[t[(k + 2) % 3]]);
     s[k] *= orientation;
     if (s[k] < 0) return Location::outside();
   }
@@ -176,23 +179,28 @@ struct Additions {
 // tritri's filtered exact predicates) in a projection where t is not degenerate. Cost:
 // one location per distinct point of t's coplanar partners (points on an edge two
 // partners share, and segment ends, are located once), most of them settled by boxes.
-void share_coplanar(const std::vector<Vec3>& V, const std::vector<Tri>& F, IntersectionGraph& g) {
+template <class M>
+void share_coplanar(const std::vector<typename M::Vertex>& V, const std::vector<Tri>& F,
+                    BasicIntersectionGraph<typename M::Point>& g) {
   std::vector<Additions> add(F.size());
   tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
     if (g.coplanar_partners[t].empty()) return;
     const Tri& tri = F[t];
     // (Named variables, not a structured binding: the lambda below captures them.)
-    const std::pair<tritri::Plane, int> proj =
-        tritri::projection(tritri::DoubleKernel{}, V[tri[0]], V[tri[1]], V[tri[2]]);
+    const std::pair<tritri::Plane, int> proj = M::projection(V[tri[0]], V[tri[1]], V[tri[2]]);
     const tritri::Plane plane = proj.first;
     const int orientation = proj.second;
     Additions& a = add[t];
-    std::array<double, 3> lo = V[tri[0]], hi = V[tri[0]];
-    for (int k = 1; k < 3; ++k)
+    Vec3 lo, hi;
+    M::bounds(V[tri[0]], lo, hi);
+    for (int k = 1; k < 3; ++k) {
+      Vec3 l, h;
+      M::bounds(V[tri[k]], l, h);
       for (int c = 0; c < 3; ++c) {
-        lo[c] = std::min(lo[c], V[tri[k]][c]);
-        hi[c] = std::max(hi[c], V[tri[k]][c]);
+        lo[c] = std::min(lo[c], l[c]);
+        hi[c] = std::max(hi[c], h[c]);
       }
+    }
     // The points to locate: (id, 1 if it is one of a partner's points, 0 if only a
     // segment end, such as a partner's corner), each id once.
     std::vector<std::pair<int, int>> ids;
@@ -211,10 +219,10 @@ void share_coplanar(const std::vector<Vec3>& V, const std::vector<Tri>& F, Inter
     for (std::size_t i = 0; i < ids.size(); ++i) {
       const int x = ids[i].first;
       // A box around the point disjoint from t's box: outside, with no predicate.
-      const tritri::BoxBounds b = tritri::box_bounds(g.points[x]);
+      const typename M::Box b = M::box(g.points[x]);
       bool apart = false;
       for (int c = 0; c < 3; ++c) apart = apart || b[c].hi < lo[c] || b[c].lo > hi[c];
-      where[i] = apart ? Location::outside() : locate(g.points, tri, plane, orientation, x, b);
+      where[i] = apart ? Location::outside() : locate<M>(V, g.points, tri, plane, orientation, x, b);
       if (!ids[i].second) continue;
       if (where[i].kind == Location::Interior)
         a.inside.push_back(x);
@@ -251,9 +259,13 @@ void share_coplanar(const std::vector<Vec3>& V, const std::vector<Tri>& F, Inter
 
 }  // namespace
 
-IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                                           const PairRecords& pairs) {
-  IntersectionGraph g;
+template <class M>
+BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::vector<typename M::Vertex>& V,
+                                                                   const std::vector<Tri>& F,
+                                                                   const PairRecords& pairs) {
+  using Point = typename M::Point;
+  using Key = typename M::Key;
+  BasicIntersectionGraph<Point> g;
   g.num_input_vertices = static_cast<int>(V.size());
   build_edges(F, g);
 
@@ -283,16 +295,17 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
       keys.push_back(lpi);
     }
   named = {};  // freed before the points are built (peak memory)
-  std::vector<tritri::ImplicitPoint> lpis(keys.size());
-  tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { lpis[i] = make_lpi(V, F, keys[i]); });
+  std::vector<Point> lpis(keys.size());
+  tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { lpis[i] = make_lpi<M>(V, F, keys[i]); });
 
   // 2. Exact deduplication among new points: sort by an exact total order, along
-  // tritri::kSortDirection with ties by xyz (distinct points of structured inputs rarely
-  // tie along it; certified intervals settle almost every comparison); each run of equal
-  // points is represented by its smallest key index (deterministic).
-  std::vector<tritri::XBounds> db(keys.size());
-  tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { db[i] = tritri::direction_bounds(lpis[i]); });
-  auto compare = [&](int a, int b) { return tritri::compare_along_direction(lpis[a], db[a], lpis[b], db[b]); };
+  // M::compare (DoubleModel: along tritri::kSortDirection with ties by xyz; distinct points
+  // of structured inputs rarely tie along it; certified intervals settle almost every
+  // comparison); each run of equal points is represented by its smallest key index
+  // (deterministic).
+  std::vector<Key> db(keys.size());
+  tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { db[i] = M::key(lpis[i]); });
+  auto compare = [&](int a, int b) { return M::compare(lpis[a], db[a], lpis[b], db[b]); };
   std::vector<int> order(keys.size());
   std::iota(order.begin(), order.end(), 0);
   tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
@@ -314,16 +327,16 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   // exactly the x of a new point, where xyz order would need exact arithmetic).
   std::vector<int> final_id(keys.size(), -1);
   g.points.reserve(V.size());
-  for (const Vec3& v : V) g.points.push_back(tritri::ImplicitPoint::explicit_point(v));
+  for (const auto& v : V) g.points.push_back(M::explicit_point(v));
   std::vector<int> by_position;
-  std::vector<tritri::XBounds> vb;
+  std::vector<Key> vb;
   if (!keys.empty()) {
     vb.resize(V.size());
-    tbb::parallel_for(std::size_t{0}, V.size(), [&](std::size_t v) { vb[v] = tritri::direction_bounds(g.points[v]); });
+    tbb::parallel_for(std::size_t{0}, V.size(), [&](std::size_t v) { vb[v] = M::key(g.points[v]); });
     by_position.resize(V.size());
     std::iota(by_position.begin(), by_position.end(), 0);
     tbb::parallel_sort(by_position.begin(), by_position.end(), [&](int a, int b) {
-      const int c = tritri::compare_along_direction(g.points[a], vb[a], g.points[b], vb[b]);
+      const int c = M::compare(g.points[a], vb[a], g.points[b], vb[b]);
       return c != 0 ? c < 0 : a < b;  // (preprocessing merged equal vertices; deterministic anyway)
     });
   }
@@ -331,7 +344,7 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   std::vector<int> vertex_match(keys.size(), -1);
   for (std::size_t i = 0, v = 0; i < order.size() && v < by_position.size();) {
     const int k = order[i], vid = by_position[v];
-    const int c = tritri::compare_along_direction(g.points[vid], vb[vid], lpis[k], db[k]);
+    const int c = M::compare(g.points[vid], vb[vid], lpis[k], db[k]);
     if (c < 0) {
       ++v;
     } else {
@@ -351,7 +364,7 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   }
   for (std::size_t i = 0; i < keys.size(); ++i) final_id[i] = final_id[representative[i]];
   // The new points in the order of the sort (triangulation looks TPIs up in it, with
-  // tritri::compare_along_direction).
+  // M::compare).
   for (const int k : order)
     if (representative[k] == k && vertex_match[k] < 0) g.new_points_sorted.push_back(final_id[k]);
 
@@ -426,7 +439,7 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   g.segment_supports.erase(std::unique(g.segment_supports.begin(), g.segment_supports.end()),
                            g.segment_supports.end());
   found = {};
-  if (g.coplanar_pairs > 0) share_coplanar(V, F, g);  // keeps the lists sorted and unique
+  if (g.coplanar_pairs > 0) share_coplanar<M>(V, F, g);  // keeps the lists sorted and unique
   std::vector<std::array<int, 2>> all_segments;
   std::size_t listed = 0;
   for (const auto& v : g.triangle_segments) listed += v.size();
@@ -436,5 +449,10 @@ IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std
   g.segments = std::unique(all_segments.begin(), all_segments.end()) - all_segments.begin();
   return g;
 }
+
+template IntersectionGraph build_intersection_graph<DoubleModel>(const std::vector<Vec3>&, const std::vector<Tri>&,
+                                                                 const PairRecords&);
+template BasicIntersectionGraph<ExactModel::Point> build_intersection_graph<ExactModel>(
+    const std::vector<ExactModel::Vertex>&, const std::vector<Tri>&, const PairRecords&);
 
 }  // namespace arrangements

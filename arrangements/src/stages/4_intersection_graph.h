@@ -33,6 +33,7 @@
 
 #include "stages/3_pair_intersection.h"
 #include "arrangements/triangle_soup.h"
+#include "models/double_model.h"
 
 namespace arrangements {
 
@@ -43,9 +44,10 @@ struct SegmentSupport {
   friend bool operator==(const SegmentSupport&, const SegmentSupport&) = default;
 };
 
-struct IntersectionGraph {
+template <class Point>
+struct BasicIntersectionGraph {
   int num_input_vertices = 0;
-  std::vector<tritri::ImplicitPoint> points;
+  std::vector<Point> points;
   std::vector<std::array<int, 2>> edges;           // unique undirected edges, smaller id first
   std::vector<std::array<int, 3>> triangle_edges;  // edge id of each triangle's edge k
   std::vector<std::vector<int>> edge_points;
@@ -53,7 +55,7 @@ struct IntersectionGraph {
   std::vector<std::vector<std::array<int, 2>>> triangle_segments;
   std::vector<std::vector<int>> coplanar_partners;
   std::vector<SegmentSupport> segment_supports;  // sorted (by ends first), unique
-  std::vector<int> new_points_sorted;            // ids of the new points in exact lexicographic order
+  std::vector<int> new_points_sorted;            // ids of the new points in the model's order (M::compare)
 
   // Statistics.
   std::size_t intersecting_pairs = 0;
@@ -62,10 +64,21 @@ struct IntersectionGraph {
   std::size_t segments = 0;    // distinct constraint segments over all triangles
 };
 
+using IntersectionGraph = BasicIntersectionGraph<tritri::ImplicitPoint>;
+
+// build_intersection_graph<M>, for a point model M (models/point_model.h); without M,
+// DoubleModel.
 // Inputs:  V, F the preprocessed soup (merged vertices, no degenerate triangles);
 //          pairs the records of intersecting pairs (classify_pairs).
 // Output:  the graph. Exact. Cost: O(P log P) for P new points plus the records.
-IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std::vector<Tri>& F,
-                                           const PairRecords& pairs);
+template <class M>
+BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::vector<typename M::Vertex>& V,
+                                                                   const std::vector<Tri>& F,
+                                                                   const PairRecords& pairs);
+
+inline IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std::vector<Tri>& F,
+                                                  const PairRecords& pairs) {
+  return build_intersection_graph<DoubleModel>(V, F, pairs);
+}
 
 }  // namespace arrangements

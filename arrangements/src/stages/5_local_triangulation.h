@@ -16,13 +16,11 @@
 #include <utility>
 #include <vector>
 
-#include <tritri/implicit_predicates.h>
+#include <tritri/sign.h>
 
 #include "arrangements/triangle_soup.h"
 
 namespace arrangements::local {
-
-using tritri::ImplicitPoint;
 
 // A triangle of the local triangulation of one input triangle. Edge k is the edge
 // opposite v[k] (from v[k+1] to v[k+2]); n[k] the triangle across it (-1: the input
@@ -36,23 +34,25 @@ struct LocalTriangle {
 inline int next3(int k) { return k == 2 ? 0 : k + 1; }
 inline int prev3(int k) { return k == 0 ? 2 : k - 1; }
 
-// (See the top of this file.)
+// (See the top of this file.) M: the point model (models/point_model.h).
+template <class M>
 class LocalTriangulation {
  public:
-  std::deque<ImplicitPoint> pts;         // local vertices (a deque: off[i] points into it)
-  std::vector<tritri::OffsetPoint> off;  // their offset coordinates (origin: a corner)
+  std::deque<typename M::Point> pts;     // local vertices (a deque: off[i] may point into it)
+  std::vector<typename M::Local> off;    // their local form (M::local; origin: a corner)
   std::vector<LocalTriangle> tris;
   std::vector<int> vtri;  // a triangle incident to each vertex
 
-  LocalTriangulation(tritri::Plane plane, int sign, const Vec3& origin) : plane_(plane), sign_(sign), origin_(origin) {}
+  LocalTriangulation(tritri::Plane plane, int sign, const typename M::Vertex& origin)
+      : plane_(plane), sign_(sign), origin_(origin) {}
 
   int orient(int a, int b, int c) const {
-    return sign_ * tritri::to_int(tritri::orient2d(off[a], off[b], off[c], plane_));
+    return sign_ * tritri::to_int(M::orient2d_local(off[a], off[b], off[c], plane_));
   }
 
-  int add_vertex(const ImplicitPoint& p) {
+  int add_vertex(const typename M::Point& p) {
     pts.push_back(p);
-    off.push_back(tritri::offset_point(pts.back(), origin_));
+    off.push_back(M::local(pts.back(), origin_));
     vtri.push_back(-1);
     return static_cast<int>(pts.size()) - 1;
   }
@@ -129,7 +129,7 @@ class LocalTriangulation {
  private:
   tritri::Plane plane_;
   int sign_;
-  Vec3 origin_;
+  typename M::Vertex origin_;
   int last_ = 0;
   std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;
 

@@ -8,56 +8,40 @@
 #include <map>
 #include <numeric>
 
-#include <tritri/implicit_predicates.h>
-#include <tritri/point_bounds.h>
-
+#include "models/double_model.h"
+#include "models/exact_model.h"
 #include "stages/5_triangulate_triangle.h"
 
 namespace arrangements {
 
-using tritri::ImplicitPoint;
-
-namespace {
-
-// The point p of a model scaled by 2^k, in the unscaled model's frame: its defining
-// points scaled by 2^-k (exact: preprocessing only scales when that is exact both ways).
-ImplicitPoint unscaled(const ImplicitPoint& p, int k) {
-  auto back = [k](const Vec3& c) { return Vec3{std::ldexp(c[0], -k), std::ldexp(c[1], -k), std::ldexp(c[2], -k)}; };
-  using Kind = ImplicitPoint::Kind;
-  if (p.kind() == Kind::Explicit) return ImplicitPoint::explicit_point(back(p.approx()));
-  Vec3 in[9];
-  for (int i = 0; i < p.input_count(); ++i) in[i] = back(p.input(i));
-  if (p.kind() == Kind::LPI) return ImplicitPoint::lpi(in[0], in[1], in[2], in[3], in[4]);
-  return ImplicitPoint::tpi(in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8]);
-}
-
-}  // namespace
-
-OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& g, int scale_exponent,
-                       TriangulationInfo& info) {
+template <class M>
+BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename M::Vertex>& soup,
+                                               const BasicIntersectionGraph<typename M::Point>& g, int scale_exponent,
+                                               TriangulationInfo& info) {
+  using Point = typename M::Point;
   const std::size_t nF = soup.triangles.size();
-  std::vector<Piece> pieces(nF);
+  std::vector<Piece<Point>> pieces(nF);
   std::vector<char> busy(nF, 0);
   for (std::size_t t = 0; t < nF; ++t) {
     busy[t] = !g.triangle_points[t].empty() || !g.triangle_segments[t].empty() || !g.coplanar_partners[t].empty();
     for (int k = 0; k < 3 && !busy[t]; ++k) busy[t] = !g.edge_points[g.triangle_edges[t][k]].empty();
   }
   tbb::parallel_for(std::size_t{0}, nF, [&](std::size_t t) {
-    if (busy[t]) pieces[t] = split_triangle_of(soup, g, static_cast<int>(t));
+    if (busy[t]) pieces[t] = split_triangle_of<M>(soup, g, static_cast<int>(t));
   });
 
   // New TPIs, deduplicated exactly over all triangles (a crossing of two constraints is
   // also found by the triangles of those constraints); ids in exact lexicographic order.
-  std::vector<ImplicitPoint> new_tpis;  // ids g.points.size() + k
+  std::vector<Point> new_tpis;  // ids g.points.size() + k
   std::vector<std::size_t> tpi_offset(nF + 1, 0);
   for (std::size_t t = 0; t < nF; ++t) tpi_offset[t + 1] = tpi_offset[t] + pieces[t].tpis.size();
-  std::vector<const ImplicitPoint*> tpi(tpi_offset[nF]);
+  std::vector<const Point*> tpi(tpi_offset[nF]);
   for (std::size_t t = 0; t < nF; ++t)
     for (std::size_t k = 0; k < pieces[t].tpis.size(); ++k) tpi[tpi_offset[t] + k] = &pieces[t].tpis[k];
   std::vector<int> order(tpi.size());
   std::iota(order.begin(), order.end(), 0);
   tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
-    const int c = tritri::compare_xyz(*tpi[a], *tpi[b]);
+    const int c = M::compare_xyz(*tpi[a], *tpi[b]);
     return c != 0 ? c < 0 : a < b;
   });
   // A crossing can also be a point that classification made (e.g. where an edge of one
@@ -69,17 +53,15 @@ OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& g, int
     explicit_sorted.resize(g.num_input_vertices);
     std::iota(explicit_sorted.begin(), explicit_sorted.end(), 0);
     tbb::parallel_sort(explicit_sorted.begin(), explicit_sorted.end(),
-                       [&](int a, int b) { return soup.vertices[a] < soup.vertices[b]; });
+                       [&](int a, int b) { return M::vertex_less(soup.vertices[a], soup.vertices[b]); });
   }
-  auto existing = [&](const ImplicitPoint& x) {
-    // Input vertices in xyz order; new points in the graph's order (compare_along_direction).
+  auto existing = [&](const Point& x) {
+    // Input vertices in xyz order; new points in the graph's order (M::compare).
     auto it = std::lower_bound(explicit_sorted.begin(), explicit_sorted.end(), 0,
-                               [&](int id, int) { return tritri::compare_xyz(g.points[id], x) < 0; });
-    if (it != explicit_sorted.end() && tritri::compare_xyz(g.points[*it], x) == 0) return *it;
-    const tritri::XBounds bx = tritri::direction_bounds(x);
-    auto along = [&](int id) {
-      return tritri::compare_along_direction(g.points[id], tritri::direction_bounds(g.points[id]), x, bx);
-    };
+                               [&](int id, int) { return M::compare_xyz(g.points[id], x) < 0; });
+    if (it != explicit_sorted.end() && M::compare_xyz(g.points[*it], x) == 0) return *it;
+    const typename M::Key bx = M::key(x);
+    auto along = [&](int id) { return M::compare(g.points[id], M::key(g.points[id]), x, bx); };
     const auto at =
         std::lower_bound(lpi_sorted.begin(), lpi_sorted.end(), 0, [&](int id, int) { return along(id) < 0; });
     if (at != lpi_sorted.end() && along(*at) == 0) return *at;
@@ -87,7 +69,7 @@ OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& g, int
   };
   std::vector<int> tpi_id(tpi.size());
   for (std::size_t i = 0; i < order.size(); ++i) {
-    if (i == 0 || tritri::compare_xyz(*tpi[order[i - 1]], *tpi[order[i]]) != 0) {
+    if (i == 0 || M::compare_xyz(*tpi[order[i - 1]], *tpi[order[i]]) != 0) {
       const int id = existing(*tpi[order[i]]);
       if (id >= 0) {
         tpi_id[order[i]] = id;
@@ -95,14 +77,14 @@ OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& g, int
       }
       new_tpis.push_back(*tpi[order[i]]);
     }
-    tpi_id[order[i]] = i > 0 && tritri::compare_xyz(*tpi[order[i - 1]], *tpi[order[i]]) == 0
+    tpi_id[order[i]] = i > 0 && M::compare_xyz(*tpi[order[i - 1]], *tpi[order[i]]) == 0
                            ? tpi_id[order[i - 1]]
                            : static_cast<int>(g.points.size() + new_tpis.size()) - 1;
   }
   info.new_tpi = new_tpis.size();
 
   // Output in soup-triangle order; points renumbered in first-use order.
-  OutputMesh out;
+  BasicOutputMesh<Point> out;
   info.output_vertex.assign(g.points.size() + new_tpis.size(), -1);
   auto emit = [&](Tri tr, int t, int label_set) {
     for (int& v : tr) {
@@ -133,7 +115,7 @@ OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& g, int
       emit(soup.triangles[t], ti, soup.label_set[t]);
       continue;
     }
-    Piece p = std::move(pieces[t]);  // freed once emitted (peak memory)
+    Piece<Point> p = std::move(pieces[t]);  // freed once emitted (peak memory)
     std::vector<int> cover_labels(p.covers.size());
     for (std::size_t c = 0; c < p.covers.size(); ++c) {
       LabelSet merged;
@@ -156,8 +138,13 @@ OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& g, int
   }
   if (scale_exponent != 0)
     tbb::parallel_for(std::size_t{0}, out.vertices.size(),
-                      [&](std::size_t i) { out.vertices[i] = unscaled(out.vertices[i], scale_exponent); });
+                      [&](std::size_t i) { out.vertices[i] = M::unscaled(out.vertices[i], scale_exponent); });
   return out;
 }
+
+template OutputMesh triangulate<DoubleModel>(const TriangleSoup&, const IntersectionGraph&, int, TriangulationInfo&);
+template BasicOutputMesh<ExactModel::Point> triangulate<ExactModel>(const BasicTriangleSoup<ExactModel::Vertex>&,
+                                                                    const BasicIntersectionGraph<ExactModel::Point>&,
+                                                                    int, TriangulationInfo&);
 
 }  // namespace arrangements

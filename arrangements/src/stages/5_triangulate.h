@@ -3,7 +3,8 @@
 // Stage 5 of the pipeline (the last): split every triangle that has intersection points,
 // constraint segments or coplanar partners, exactly, and assemble the output mesh.
 //
-// OutputMesh triangulate(soup, graph, scale_exponent, info)
+// triangulate<M>(soup, graph, scale_exponent, info), for a point model M
+// (models/point_model.h); without M, DoubleModel:
 //   soup            the preprocessed soup (stage 1: merged vertices, no degenerate or
 //                   duplicate triangles)
 //   graph           its intersection graph (stage 4, coplanar partners already sharing)
@@ -32,6 +33,7 @@
 
 #include "arrangements/output_mesh.h"
 #include "arrangements/triangle_soup.h"
+#include "models/double_model.h"
 #include "stages/4_intersection_graph.h"
 
 namespace arrangements {
@@ -41,7 +43,14 @@ struct TriangulationInfo {
   std::vector<int> output_vertex;
 };
 
-OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& graph, int scale_exponent,
-                       TriangulationInfo& info);
+template <class M>
+BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename M::Vertex>& soup,
+                                               const BasicIntersectionGraph<typename M::Point>& graph,
+                                               int scale_exponent, TriangulationInfo& info);
+
+inline OutputMesh triangulate(const TriangleSoup& soup, const IntersectionGraph& graph, int scale_exponent,
+                              TriangulationInfo& info) {
+  return triangulate<DoubleModel>(soup, graph, scale_exponent, info);
+}
 
 }  // namespace arrangements

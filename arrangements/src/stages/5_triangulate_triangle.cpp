@@ -1,46 +1,41 @@
 #include "stages/5_triangulate_triangle.h"
 
-#include "support/side_of_line.h"
-
 #include <algorithm>
 #include <cmath>
 #include <deque>
 #include <stdexcept>
 #include <string>
 
-#include <tritri/double_kernel.h>
-#include <tritri/double_predicates.h>
-#include <tritri/implicit_predicates.h>
-#include <tritri/point_bounds.h>
-#include <tritri/projection.h>
-
+#include "models/double_model.h"
+#include "models/exact_model.h"
 #include "stages/5_local_triangulation.h"
-#include "support/auxiliary_point.h"
 
 namespace arrangements {
 namespace {
 
 using local::LocalTriangle;
-using local::LocalTriangulation;
-using tritri::ImplicitPoint;
 
 // The projection where triangle t is not degenerate, and t's orientation there: the
 // dominant plane first (the best conditioned, so the filters decide most predicates),
 // checked exactly, then the others in tritri's cyclic order.
-std::pair<tritri::Plane, int> projection(const std::vector<Vec3>& V, const Tri& t) {
-  const Vec3 &a = V[t[0]], &b = V[t[1]], &c = V[t[2]];
-  const auto proj = tritri::projection(tritri::DoubleKernel{}, a, b, c, tritri::dominant_plane(a, b, c));
+template <class M>
+std::pair<tritri::Plane, int> projection(const std::vector<typename M::Vertex>& V, const Tri& t) {
+  const auto proj = M::projection(V[t[0]], V[t[1]], V[t[2]]);
   if (proj.second == 0) throw std::logic_error("triangulate: degenerate triangle");
   return proj;
 }
 
 }  // namespace
 
-Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, int t) {
-  const std::vector<Vec3>& V = soup.vertices;
+template <class M>
+Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::Vertex>& soup,
+                                           const BasicIntersectionGraph<typename M::Point>& g, int t) {
+  using Vertex = typename M::Vertex;
+  using Point = typename M::Point;
+  const std::vector<Vertex>& V = soup.vertices;
   const Tri& tri = soup.triangles[t];
-  const auto [plane, sign] = projection(V, tri);
-  LocalTriangulation lt(plane, sign, V[tri[0]]);
+  const auto [plane, sign] = projection<M>(V, tri);
+  local::LocalTriangulation<M> lt(plane, sign, V[tri[0]]);
 
   // Local vertices: corners, edge points, interior points (graph ids in `global`).
   std::vector<int> global;
@@ -63,15 +58,15 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
   for (int k = 0; k < 3; ++k) {
     std::vector<int> on_edge = g.edge_points[g.triangle_edges[t][k]];
     if (on_edge.empty()) continue;
-    std::vector<std::pair<tritri::XBounds, int>> keyed(on_edge.size());
-    for (std::size_t i = 0; i < on_edge.size(); ++i) keyed[i] = {tritri::direction_bounds(g.points[on_edge[i]]), on_edge[i]};
+    std::vector<std::pair<typename M::Key, int>> keyed(on_edge.size());
+    for (std::size_t i = 0; i < on_edge.size(); ++i) keyed[i] = {M::key(g.points[on_edge[i]]), on_edge[i]};
     std::sort(keyed.begin(), keyed.end(), [&](const auto& x, const auto& y) {
-      const int c = tritri::compare_along_direction(g.points[x.second], x.first, g.points[y.second], y.first);
+      const int c = M::compare(g.points[x.second], x.first, g.points[y.second], y.first);
       return c != 0 ? c < 0 : x.second < y.second;
     });
     for (std::size_t i = 0; i < on_edge.size(); ++i) on_edge[i] = keyed[i].second;
-    const ImplicitPoint &from = g.points[tri[k]], &to = g.points[tri[(k + 1) % 3]];
-    if (tritri::compare_along_direction(from, tritri::direction_bounds(from), to, tritri::direction_bounds(to)) > 0)
+    const Point &from = g.points[tri[k]], &to = g.points[tri[(k + 1) % 3]];
+    if (M::compare(from, M::key(from), to, M::key(to)) > 0)
       std::reverse(on_edge.begin(), on_edge.end());
     int prev = local_of.at(tri[k]);
     const int end = local_of.at(tri[(k + 1) % 3]);
@@ -89,8 +84,12 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
 
   // Constraints, each with a plane through its line that is transverse to t.
   const auto& segs = g.triangle_segments[t];
-  std::vector<std::array<Vec3, 3>> support(segs.size());
-  auto at = [&](int id) { return id >= 0 ? V[id] : auxiliary_point(V, soup.triangles[-1 - id]); };
+  std::vector<std::array<Vertex, 3>> support(segs.size());
+  auto at = [&](int id) {
+    if (id >= 0) return V[id];
+    const Tri& u = soup.triangles[-1 - id];
+    return M::auxiliary_point(V[u[0]], V[u[1]], V[u[2]]);
+  };
   // Many segments of t share a support plane (a partner's plane): each distinct plane is
   // tested once (a coplanar partner's plane costs three exact zeros).
   std::vector<std::pair<std::array<int, 3>, bool>> tested;
@@ -100,12 +99,12 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
     bool found = false;
     for (; !found && it != g.segment_supports.end() && it->ends == segs[s]; ++it)
       for (const auto& pl : it->planes) {
-        const std::array<Vec3, 3> P = {at(pl[0]), at(pl[1]), at(pl[2])};
+        const std::array<Vertex, 3> P = {at(pl[0]), at(pl[1]), at(pl[2])};
         auto known = std::find_if(tested.begin(), tested.end(), [&](const auto& e) { return e.first == pl; });
         if (known == tested.end()) {
           bool transverse = false;
           for (int k = 0; k < 3 && !transverse; ++k)
-            transverse = tritri::orient3d(P[0], P[1], P[2], V[tri[k]]) != tritri::Sign::Zero;
+            transverse = M::orient3d(P[0], P[1], P[2], V[tri[k]]) != tritri::Sign::Zero;
           known = tested.insert(tested.end(), {pl, transverse});
         }
         if (known->second) {
@@ -116,11 +115,11 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
       }
     if (!found) throw std::logic_error("triangulate: no transverse plane for a constraint segment");
   }
-  Piece piece;
+  Piece<Point> piece;
   auto crossing = [&](int c1, int c2) {
     const auto& A = support[c1];
     const auto& B = support[c2];
-    const ImplicitPoint x = ImplicitPoint::tpi(V[tri[0]], V[tri[1]], V[tri[2]], A[0], A[1], A[2], B[0], B[1], B[2]);
+    const Point x = M::tpi(V[tri[0]], V[tri[1]], V[tri[2]], A[0], A[1], A[2], B[0], B[1], B[2]);
     piece.tpis.push_back(x);
     global.push_back(-static_cast<int>(piece.tpis.size()));
     return lt.add_vertex(x);
@@ -139,31 +138,31 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
   std::vector<int> partner_sign(partners.size());
   for (std::size_t q = 0; q < partners.size(); ++q) {
     const Tri& u = soup.triangles[partners[q]];
-    partner_sign[q] = tritri::to_int(tritri::orient2d(V[u[0]], V[u[1]], V[u[2]], plane));
+    partner_sign[q] = tritri::to_int(M::orient2d(V[u[0]], V[u[1]], V[u[2]], plane));
   }
   // Whether local vertex v lies in partner q's closed triangle, computed once per pair
   // (a vertex has several local triangles): the filter on the vertex's certified box
   // first, side_of_line for the edges it leaves undecided.
   std::vector<std::int8_t> in_partner(partners.size() * lt.pts.size(), -1);
-  std::vector<tritri::BoxBounds> box(lt.pts.size());
+  std::vector<typename M::Box> box(lt.pts.size());
   std::vector<char> has_box(lt.pts.size(), 0);
   auto in_closed_partner = [&](std::size_t q, int v) {
     std::int8_t& known = in_partner[q * lt.pts.size() + static_cast<std::size_t>(v)];
     if (known >= 0) return known == 1;
     if (!has_box[v]) {
-      box[v] = tritri::box_bounds(lt.pts[v]);
+      box[v] = M::box(lt.pts[v]);
       has_box[v] = 1;
     }
     const Tri& u = soup.triangles[partners[q]];
     int side[3];
     bool inside = true;
     for (int e = 0; e < 3 && inside; ++e) {
-      side[e] = tritri::orient2d_bounded(V[u[e]], V[u[(e + 1) % 3]], box[v], plane);
+      side[e] = M::side_bounded(V[u[e]], V[u[(e + 1) % 3]], box[v], plane);
       inside = side[e] == tritri::kUndecided || partner_sign[q] * side[e] >= 0;
     }
     for (int e = 0; e < 3 && inside; ++e)
       if (side[e] == tritri::kUndecided)
-        inside = partner_sign[q] * side_of_line(g.points[u[e]], g.points[u[(e + 1) % 3]], lt.pts[v], plane,
+        inside = partner_sign[q] * M::side_of_line(g.points[u[e]], g.points[u[(e + 1) % 3]], lt.pts[v], plane,
                                                 &g.points[u[(e + 2) % 3]]) >=
                  0;
     known = inside ? 1 : 0;
@@ -190,5 +189,10 @@ Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, in
   }
   return piece;
 }
+
+template Piece<tritri::ImplicitPoint> split_triangle_of<DoubleModel>(const TriangleSoup&, const IntersectionGraph&,
+                                                                     int);
+template Piece<ExactModel::Point> split_triangle_of<ExactModel>(const BasicTriangleSoup<ExactModel::Vertex>&,
+                                                                const BasicIntersectionGraph<ExactModel::Point>&, int);
 
 }  // namespace arrangements

@@ -1,14 +1,14 @@
 // arrangements/src/stages/5_triangulate_triangle.h (internal to stage 5)
 //
-// split_triangle_of(soup, graph, t): the constrained triangulation of one soup triangle t
+// split_triangle_of<M>(soup, graph, t), for a point model M (models/point_model.h): the constrained triangulation of one soup triangle t
 // by its intersection points and constraint segments (and those of its coplanar
 // partners), built by point insertion and constraint insertion with edge flips (Sloan's
 // algorithm). Returns a Piece: the local triangles (graph point ids, or -1 - k for the
 // k-th new TPI of this triangle, where two constraints cross), the new TPIs, and for a
 // triangle shared with coplanar partners, which soup triangles cover each local triangle.
-// Exactness: every decision is orient2d on implicit points in a projection where t is not
-// degenerate (checked exactly), through tritri's filtered exact predicates on offset
-// points; TPIs are implicit (never rounded).
+// Exactness: every decision is orient2d on the model's points in a projection where t is
+// not degenerate (checked exactly): DoubleModel, tritri's filtered exact predicates on
+// offset implicit points (TPIs implicit, never rounded); ExactModel, Epeck's.
 // Cost: per triangle, O(n log n)-ish expected point insertion by walking plus constraint
 // insertion by edge flips (worst case quadratic in the triangle's points).
 #pragma once
@@ -23,13 +23,16 @@
 namespace arrangements {
 
 // What one input triangle contributes.
+template <class Point>
 struct Piece {
   std::vector<Tri> triangles;               // local ids: < 0 means new TPI (-1 - k), else graph id
-  std::vector<tritri::ImplicitPoint> tpis;  // the new TPIs, local numbering
+  std::vector<Point> tpis;                  // the new TPIs, local numbering
   std::vector<int> covered_by;              // per triangle: -1 for t itself only, else index into covers
   std::vector<std::vector<int>> covers;     // distinct sets of soup triangles covering (t included)
 };
 
-Piece split_triangle_of(const TriangleSoup& soup, const IntersectionGraph& g, int t);
+template <class M>
+Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::Vertex>& soup,
+                                           const BasicIntersectionGraph<typename M::Point>& g, int t);
 
 }  // namespace arrangements

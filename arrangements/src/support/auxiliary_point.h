@@ -1,6 +1,6 @@
 // arrangements/src/support/auxiliary_point.h
 //
-// auxiliary_point(V, t): an explicit point strictly off the plane of triangle t, with
+// auxiliary_point(V, t) = auxiliary_point(a, b, c) of t's corners: an explicit point strictly off the plane of triangle t, with
 // finite coordinates, deterministic in t's coordinates. Coplanar edge-edge crossings are
 // LPIs whose plane is the other edge plus this point: that plane is transverse to the
 // triangles' common plane, so the LPI is well defined whenever the edges cross properly.
@@ -27,8 +27,7 @@
 
 namespace arrangements {
 
-inline Vec3 auxiliary_point(const std::vector<Vec3>& V, const Tri& t) {
-  const Vec3 &a = V[t[0]], &b = V[t[1]], &c = V[t[2]];
+inline Vec3 auxiliary_point(const Vec3& a, const Vec3& b, const Vec3& c) {
   const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
   const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
   const Vec3 n = {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
@@ -50,5 +49,7 @@ inline Vec3 auxiliary_point(const std::vector<Vec3>& V, const Tri& t) {
     }
   throw std::logic_error("auxiliary_point: degenerate triangle (collinear corners)");
 }
+
+inline Vec3 auxiliary_point(const std::vector<Vec3>& V, const Tri& t) { return auxiliary_point(V[t[0]], V[t[1]], V[t[2]]); }
 
 }  // namespace arrangements

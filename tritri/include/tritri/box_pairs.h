@@ -62,16 +62,17 @@ namespace detail::box_pairs {
 using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int, CGAL::Box_intersection_d::ID_EXPLICIT>;
 using Pairs = std::vector<std::pair<int, int>>;
 
-inline std::vector<Box> triangle_boxes(std::span<const std::array<double, 3>> V,
+// Vlo, Vhi: each vertex's box (the same span for points with double coordinates).
+inline std::vector<Box> triangle_boxes(std::span<const std::array<double, 3>> Vlo,
+                                       std::span<const std::array<double, 3>> Vhi,
                                        std::span<const std::array<int, 3>> F) {
   std::vector<Box> boxes;
   boxes.reserve(F.size());
   for (std::size_t t = 0; t < F.size(); ++t) {
-    const auto &a = V[F[t][0]], &b = V[F[t][1]], &c = V[F[t][2]];
     double lo[3], hi[3];
     for (int axis = 0; axis < 3; ++axis) {
-      lo[axis] = std::min({a[axis], b[axis], c[axis]});
-      hi[axis] = std::max({a[axis], b[axis], c[axis]});
+      lo[axis] = std::min({Vlo[F[t][0]][axis], Vlo[F[t][1]][axis], Vlo[F[t][2]][axis]});
+      hi[axis] = std::max({Vhi[F[t][0]][axis], Vhi[F[t][1]][axis], Vhi[F[t][2]][axis]});
     }
     boxes.emplace_back(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), static_cast<int>(t));
   }
@@ -209,15 +210,19 @@ void visit_overlapping_pairs_with_groups(const std::vector<Box>& boxes, std::spa
 // for every pair that overlapping_triangle_pairs would return, in no particular order.
 // For callers that filter or classify pairs as they are found, so that millions of
 // candidate pairs are never stored. Same preconditions, exactness and search cost.
+// With Vlo, Vhi in place of V: vertices known only to lie in a box each (points with
+// rational coordinates and their certified intervals); pairs of triangles whose boxes
+// (of their corners' boxes) overlap.
 template <class Visit>
-void for_each_overlapping_pair(std::span<const std::array<double, 3>> V, std::span<const std::array<int, 3>> F,
-                               int threads, std::span<const std::int64_t> group, const Visit& visit) {
+void for_each_overlapping_pair(std::span<const std::array<double, 3>> Vlo, std::span<const std::array<double, 3>> Vhi,
+                               std::span<const std::array<int, 3>> F, int threads,
+                               std::span<const std::int64_t> group, const Visit& visit) {
   using namespace detail::box_pairs;
   if (!group.empty() && group.size() != F.size())
     throw std::invalid_argument(
         "tritri::overlapping_triangle_pairs: group must be empty or have one entry per triangle");
   if (F.size() < 2) return;
-  std::vector<Box> boxes = triangle_boxes(V, F);
+  std::vector<Box> boxes = triangle_boxes(Vlo, Vhi, F);
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   const bool groups = std::any_of(group.begin(), group.end(), [](std::int64_t id) { return id >= 0; });
   arena.execute([&] {
@@ -226,6 +231,12 @@ void for_each_overlapping_pair(std::span<const std::array<double, 3>> V, std::sp
     else
       visit_overlapping_pairs(boxes, arena.max_concurrency(), visit);
   });
+}
+
+template <class Visit>
+void for_each_overlapping_pair(std::span<const std::array<double, 3>> V, std::span<const std::array<int, 3>> F,
+                               int threads, std::span<const std::int64_t> group, const Visit& visit) {
+  for_each_overlapping_pair(V, V, F, threads, group, visit);
 }
 
 inline std::vector<std::pair<int, int>> overlapping_triangle_pairs(std::span<const std::array<double, 3>> V,

@@ -78,4 +78,19 @@ inline Plane dominant_plane(const std::array<double, 3>& a, const std::array<dou
   return dropping[dominant];
 }
 
+// For points of other kernels (e.g. CGAL points with rational coordinates): their
+// CGAL::to_double approximations when they have them, else XY; projection() checks the
+// choice exactly either way.
+template <class P>
+Plane dominant_plane(const P& a, const P& b, const P& c) {
+  if constexpr (requires { to_double(a.x()); }) {  // found by argument-dependent lookup
+    auto approx = [](const P& p) {
+      return std::array<double, 3>{to_double(p.x()), to_double(p.y()), to_double(p.z())};
+    };
+    return dominant_plane(approx(a), approx(b), approx(c));
+  } else {
+    return Plane::XY;
+  }
+}
+
 }  // namespace tritri

@@ -1,8 +1,11 @@
 // tritri/detail/homogeneous.h
 //
 // Homogeneous coordinates (X, Y, Z, W) of implicit points, written once over a number
-// type T that supports T(double), +, - and * (FilteredValue for the filter, CGAL::Mpzf
-// or CGAL::Gmpq for exact evaluation). The point is (X/W, Y/W, Z/W).
+// type T that supports +, - and * and construction from the defining points' coordinates
+// (FilteredValue for the filter, CGAL::Mpzf or CGAL::Gmpq for exact evaluation of double
+// points; an exact rational type for points with rational coordinates, the pipeline's
+// exact path). A defining point is anything indexable by 0, 1, 2 (std::array<double, 3>,
+// a CGAL Point_3). The point is (X/W, Y/W, Z/W).
 //
 //   LPI(p, q; r, s, t): the line through p, q meets the plane through r, s, t.
 //     n = (s-r) x (t-r),  W = n.(q-p),  (X,Y,Z) = p W + (n.(r-p)) (q-p).
@@ -25,8 +28,8 @@ struct Homogeneous {
   T x, y, z, w;
 };
 
-template <class T>
-std::array<T, 3> difference(const Coords& a, const Coords& b) {
+template <class T, class P>
+std::array<T, 3> difference(const P& a, const P& b) {
   return {T(a[0]) - T(b[0]), T(a[1]) - T(b[1]), T(a[2]) - T(b[2])};
 }
 
@@ -40,8 +43,8 @@ T dot(const std::array<T, 3>& a, const std::array<T, 3>& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-template <class T>
-Homogeneous<T> lpi_homogeneous(const Coords& p, const Coords& q, const Coords& r, const Coords& s, const Coords& t) {
+template <class T, class P>
+Homogeneous<T> lpi_homogeneous(const P& p, const P& q, const P& r, const P& s, const P& t) {
   const auto n = cross(difference<T>(s, r), difference<T>(t, r));
   const auto pq = difference<T>(q, p);
   const T w = dot(n, pq);
@@ -49,8 +52,8 @@ Homogeneous<T> lpi_homogeneous(const Coords& p, const Coords& q, const Coords& r
   return {T(p[0]) * w + lambda * pq[0], T(p[1]) * w + lambda * pq[1], T(p[2]) * w + lambda * pq[2], w};
 }
 
-template <class T>
-Homogeneous<T> tpi_homogeneous(std::span<const Coords, 9> v) {
+template <class T, class P>
+Homogeneous<T> tpi_homogeneous(std::span<const P, 9> v) {
   std::array<T, 3> n[3];
   T d[3];
   for (int i = 0; i < 3; ++i) {
