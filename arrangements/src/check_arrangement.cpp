@@ -14,6 +14,7 @@
 #include <tritri/classify.h>
 #include <tritri/implicit_kernel.h>
 #include <tritri/projection.h>
+#include <tritri/shared_vertices.h>
 
 #include "models/exact_model.h"
 
@@ -90,6 +91,13 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
       report(out.violations, describe(mesh, i, j, "same three vertices"));
       return;
     }
+    // Neighbours that provably meet only in what they share (tritri's sufficient
+    // conditions, each proved in shared_vertices.h): in a projection first, then by plane
+    // signs; the others are classified.
+    const std::array<typename K::Point, 3> pa{P[a[0]], P[a[1]], P[a[2]]}, pb{P[b[0]], P[b[1]], P[b[2]]};
+    if (shared > 0 && (tritri::meet_in_shared_in_projection(K{}, pa, a, pb, b) ||
+                       tritri::meet_only_in_shared(K{}, pa, a, pb, b)))
+      return;
     const tritri::Result r =
         tritri::classify<K>(P[a[0]], P[a[1]], P[a[2]], P[b[0]], P[b[1]], P[b[2]]);
     if (r.degenerate) return;  // reported above

@@ -37,6 +37,7 @@ struct DoubleModel {
   using Box = tritri::BoxBounds;
   using PlaneCache = tritri::PlaneFilter;
   using Local = tritri::OffsetPoint;
+  static constexpr bool kProjectionFirst = false;  // stage 2: see detect_pairs
   static constexpr bool kCanScale = true;
 
   // Stage 1: -0.0 becomes +0.0 (equal positions, equal bits).

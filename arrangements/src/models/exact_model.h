@@ -43,6 +43,7 @@ struct ExactModel {
   using Box = tritri::BoxBounds;
   struct PlaneCache {};
   using Local = Point;
+  static constexpr bool kProjectionFirst = true;  // stage 2: see detect_pairs
   static constexpr bool kCanScale = false;
 
   using FT = CGAL::Epeck::FT;
