@@ -21,11 +21,13 @@ enum class InputErrorKind {
   unknown_format,         // the extension is not .obj .off .stl .ply (any case)
   unsupported_variant,    // a valid file in a variant the reader does not handle
   malformed,              // the file does not follow its format
-  non_finite_coordinate,  // NaN or infinite coordinate (or a decimal that overflows double)
+  non_finite_coordinate,  // NaN or infinite coordinate (or a decimal that overflows double, or a
+                          // rational N/D beyond the largest finite double)
   index_out_of_range,     // a face refers to a vertex that does not exist
   too_few_corners,        // a face with fewer than 3 corners
   empty_mesh,             // no faces at all
   too_large,              // more vertices or triangles than the pipeline's int indices allow
+                          // (or a rational coordinate with more than 100000 digits)
 };
 
 // A short stable name for the kind ("non_finite_coordinate", ...).

@@ -1,6 +1,8 @@
 // arrangements/load_triangle_soup.h
 //
-// Input to the pipeline (before stage 1): read a polygon soup from a mesh file into a TriangleSoup.
+// Input to the pipeline (before stage 1): read a polygon soup from mesh files into a
+// TriangleSoup (double coordinates) or, with load_mesh_files, into an ExactTriangleSoup when
+// a file has exact rational coordinates (as `arrange --exact` writes them).
 //
 // TriangleSoup load_triangle_soup(path, label = 0)
 //   path   an .obj, .off, .stl or .ply file (the extension decides the format, in any case)
@@ -22,6 +24,34 @@
 //   triangle lists); label_sets = {{0}, {1}, ...}, label_set[t] = the index of t's file. No paths:
 //   an empty soup.
 //
+// AnyTriangleSoup load_mesh_files(paths)
+//   The same files, labels, `source`, `polygon` and concatenation as load_triangle_soups,
+//   except that in OBJ and OFF files a vertex coordinate may also be an exact rational
+//   (below). Returns
+//     TriangleSoup       when every coordinate of every file is a double: exactly what
+//                        load_triangle_soups(paths) returns (the same readers and speed)
+//     ExactTriangleSoup  otherwise: every coordinate of every file exactly (decimals as
+//                        their correctly rounded doubles, converted exactly; rationals as
+//                        they are), polygons triangulated on the exact coordinates
+//   No paths: an empty TriangleSoup.
+//
+// Rational coordinates (OBJ "v" x y z, OFF vertex x y z; not normals, colours, STL or PLY):
+//   a token [+-]? digits "/" digits, e.g. -462951018488861/2305843009213693952 (what
+//   write_mesh writes with exact = true), need not be reduced ("2/6" is 1/3). Decimal
+//   tokens keep their meaning (the correctly rounded double). A rational that is exactly a
+//   double (e.g. "1/4", "6/3") is that double, so such files still give a TriangleSoup; a
+//   zero numerator with a '-' ("-0/3") is -0.0, as the decimal "-0" is (exactly: 0).
+//   load_triangle_soup and load_triangle_soups read only files whose rationals are all
+//   doubles: a rational that is not a double is refused (unsupported_variant, "... the
+//   file has exact rational coordinates, which load_mesh_files reads ...").
+//   Refused (InputError naming the file and line, for every loader): a zero denominator
+//   (malformed, "has a zero denominator"); a token that is neither a decimal nor the
+//   rational grammar, e.g. "1/", "/2", "1/2/3", "1.5/2", "0x1/3" (malformed, "is not a
+//   number"); a numerator or denominator of more than 100000 digits as written (too_large,
+//   "is a huge rational"); a rational whose absolute value exceeds the largest finite
+//   double (non_finite_coordinate, "is beyond the largest finite double": the pipeline
+//   needs finite bounding boxes).
+//
 // Polygons: a face with corners c0 c1 ... c(n-1), n > 3, becomes the n - 2 triangles of
 // triangulate_polygon (arrangements/src/io/triangulate_polygon.h) in place of the face, so every
 // face keeps n - 2 consecutive entries of `source`; a triangle is kept as it is. Faces with
@@ -35,7 +65,8 @@
 //   or CR; a UTF-8 byte order mark (EF BB BF) at the start of the file is skipped.
 //   Numbers are decimal (optional sign, digits, '.', exponent) and fill their whole
 //   whitespace-separated token; they are rounded correctly (std::from_chars); values that
-//   underflow become the correctly rounded subnormal or zero (as strtod makes them).
+//   underflow become the correctly rounded subnormal or zero (as strtod makes them). OBJ
+//   and OFF vertex coordinates may also be rationals (above).
 //   OBJ  v / f statements (f corners i, i/t, i/t/n or i//n; negative = relative to the
 //        vertices defined so far; positive indices may name vertices defined later in the
 //        file); numbers after x y z of a v are ignored; vt, vn, comments and the other
@@ -66,12 +97,17 @@
 // corners, a file without faces, and more than INT_MAX vertices or triangles. Tokens in
 // messages are quoted as they are, bytes that are not printable ASCII escaped (\xEF).
 // Never crashes and throws nothing else (except std::bad_alloc when memory runs out).
+// Rational coordinates are refused as listed above.
 //
-// Cost: one pass over the file, linear in its size.
+// Cost: one pass over the file, linear in its size. Rational tokens cost GMP's conversion
+// of their digits and an exact comparison; an ExactTriangleSoup costs a rational per
+// coordinate (an order of magnitude more memory than a double) and exact polygon
+// triangulation.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "arrangements/input_error.h"
@@ -82,5 +118,9 @@ namespace arrangements {
 TriangleSoup load_triangle_soup(const std::string& path, std::uint32_t label = 0);
 
 TriangleSoup load_triangle_soups(const std::vector<std::string>& paths);
+
+using AnyTriangleSoup = std::variant<TriangleSoup, ExactTriangleSoup>;
+
+AnyTriangleSoup load_mesh_files(const std::vector<std::string>& paths);
 
 }  // namespace arrangements

@@ -3,7 +3,9 @@
 // read_exact_mesh(path): read an OBJ or OFF mesh with exact rational coordinates, as
 // write_mesh(path, mesh, {.exact = true}) writes them (write_mesh.h), or with ordinary
 // decimal coordinates, each read as the exact rational value of its decimal text (so
-// "0.1" is 1/10, not the double nearest to it).
+// "0.1" is 1/10, not the double nearest to it). For the pipeline's input use
+// load_mesh_files (load_triangle_soup.h): it reads the same rationals (with the same
+// grammar) but decimals as doubles, triangulates polygons and accepts more of the formats.
 //
 //   path     an .obj or .off file (the extension decides, any case)
 // returns ExactMesh

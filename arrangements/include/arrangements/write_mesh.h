@@ -31,7 +31,8 @@
 // D >= 2) or as "N" when it is an integer (D = 1). Explicit vertices are written the same
 // way (a double is the dyadic rational it holds, e.g. 0.1 is
 // 3602879701896397/36028797018963968). read_exact_mesh (read_exact_mesh.h) reads these
-// files back exactly. They are not read by load_triangle_soup (which reads doubles).
+// files back exactly, and so does load_mesh_files (load_triangle_soup.h), into an
+// ExactTriangleSoup; load_triangle_soup reads them only when every coordinate is a double.
 //
 // Atomic: every file is written to a new temporary file in the same folder and renamed
 // into place once complete (and flushed to disk), the side file just before the mesh file.

@@ -1,19 +1,23 @@
-// Load (before stage 1): mesh file -> TriangleSoup (see load_triangle_soup.h): the file is read once, as
-// a stream, by the reader of its format (read_obj.cpp, read_off.cpp, read_stl.cpp,
-// read_ply.cpp), which validates it and fills a SoupBuilder in the same pass.
+// Load (before stage 1): mesh file -> TriangleSoup or ExactTriangleSoup (see
+// load_triangle_soup.h): the file is read once, as a stream, by the reader of its format
+// (read_obj.cpp, read_off.cpp, read_stl.cpp, read_ply.cpp), which validates it and fills a
+// SoupBuilder (soup_builder.cpp) in the same pass.
 #include "arrangements/load_triangle_soup.h"
 
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <iterator>
 #include <string>
 #include <system_error>
+#include <type_traits>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "io/mesh_format.h"
 #include "io/mesh_reader.h"
-#include "io/triangulate_polygon.h"
 
 namespace arrangements {
 
@@ -89,53 +93,33 @@ std::string read_whole_file(const std::string& path) {
   return bytes;
 }
 
-void SoupBuilder::refuse_too_large(const char* what) const {
-  refuse(InputErrorKind::too_large, path_,
-         std::string("more than ") + std::to_string(kMaxIndexCount) + " " + what +
-             " (the pipeline's int indices allow no more)");
-}
-
-void SoupBuilder::add_polygon(std::span<const int> corners) {
-  if (corners.size() - 2 > kMaxIndexCount - triangles.size()) refuse_too_large("triangles");
-  polygon_start_.push_back(polygon_corners_.size());
-  polygon_triangle_.push_back(triangles.size());
-  polygon_corners_.insert(polygon_corners_.end(), corners.begin(), corners.end());
-  triangles.resize(triangles.size() + (corners.size() - 2));
-}
-
-void SoupBuilder::finish() {
-  std::vector<Tri> split;  // one face's triangles
-  for (std::size_t k = 0; k < polygon_start_.size(); ++k) {
-    const std::size_t begin = polygon_start_[k];
-    const std::size_t end = k + 1 < polygon_start_.size() ? polygon_start_[k + 1] : polygon_corners_.size();
-    split.clear();
-    const bool certified =
-        triangulate_polygon(vertices, std::span<const int>(polygon_corners_.data() + begin, end - begin), split);
-    if (split.size() != end - begin - 2)
-      throw std::logic_error("triangulate_polygon returned " + std::to_string(split.size()) + " triangles for " +
-                             std::to_string(end - begin) + " corners");
-    const auto first = static_cast<std::ptrdiff_t>(polygon_triangle_[k]);
-    std::copy(split.begin(), split.end(), triangles.begin() + first);
-    if (certified) {  // its triangles cannot meet improperly: one id, no candidate pairs
-      if (polygon.empty()) polygon.assign(triangles.size(), -1);
-      std::fill_n(polygon.begin() + first, split.size(), static_cast<std::int64_t>(first));
-    }
-  }
-  std::vector<int>().swap(polygon_corners_);
-  std::vector<std::size_t>().swap(polygon_start_);
-  std::vector<std::size_t>().swap(polygon_triangle_);
-}
-
 }  // namespace detail
 
 using detail::MeshFormat;
 using detail::refuse;
 
-TriangleSoup load_triangle_soup(const std::string& path, std::uint32_t label) {
+namespace {
+
+template <class Coordinates>
+BasicTriangleSoup<Coordinates> soup_of(std::vector<Coordinates>&& vertices, detail::SoupBuilder& builder,
+                                       std::uint32_t label) {
+  BasicTriangleSoup<Coordinates> soup;
+  soup.vertices = std::move(vertices);
+  soup.triangles = std::move(builder.triangles);
+  soup.label_set.assign(soup.triangles.size(), 0);
+  soup.label_sets = {LabelSet{label}};
+  soup.source.resize(soup.triangles.size());
+  for (std::size_t t = 0; t < soup.source.size(); ++t) soup.source[t] = static_cast<std::int64_t>(t);
+  soup.polygon = std::move(builder.polygon);
+  return soup;
+}
+
+// One file; exact: whether rationals that are not doubles are kept (else refused).
+AnyTriangleSoup load_file(const std::string& path, std::uint32_t label, bool exact) {
   const MeshFormat format = detail::format_of_or_refuse(path, detail::kLoadFormats, "supported:");
   detail::FileBytes in(path);
   if (in.size() == 0 && in.fill(1) == 0) refuse(InputErrorKind::empty_mesh, path, "the file is empty");
-  detail::SoupBuilder builder(path);
+  detail::SoupBuilder builder(path, exact);
   switch (format) {
     case MeshFormat::obj:
       detail::read_obj(in, builder);
@@ -152,48 +136,87 @@ TriangleSoup load_triangle_soup(const std::string& path, std::uint32_t label) {
   }
   if (builder.triangles.empty()) refuse(InputErrorKind::empty_mesh, path, "the mesh has no faces");
   builder.finish();
-
-  TriangleSoup soup;
-  soup.vertices = std::move(builder.vertices);
-  soup.triangles = std::move(builder.triangles);
-  soup.label_set.assign(soup.triangles.size(), 0);
-  soup.label_sets = {LabelSet{label}};
-  soup.source.resize(soup.triangles.size());
-  for (std::size_t t = 0; t < soup.source.size(); ++t) soup.source[t] = static_cast<std::int64_t>(t);
-  soup.polygon = std::move(builder.polygon);
-  return soup;
+  if (!builder.exact_vertices.empty()) return soup_of(std::move(builder.exact_vertices), builder, label);
+  return soup_of(std::move(builder.vertices), builder, label);
 }
 
-TriangleSoup load_triangle_soups(const std::vector<std::string>& paths) {
-  TriangleSoup all;
+ExactVec3 exactly(const Vec3& v) { return {CGAL::Gmpq(v[0]), CGAL::Gmpq(v[1]), CGAL::Gmpq(v[2])}; }
+
+ExactTriangleSoup exactly(TriangleSoup&& soup) {
+  ExactTriangleSoup out;
+  out.vertices.reserve(soup.vertices.size());
+  for (const Vec3& v : soup.vertices) out.vertices.push_back(exactly(v));
+  std::vector<Vec3>().swap(soup.vertices);
+  out.triangles = std::move(soup.triangles);
+  out.label_set = std::move(soup.label_set);
+  out.label_sets = std::move(soup.label_sets);
+  out.source = std::move(soup.source);
+  out.polygon = std::move(soup.polygon);
+  return out;
+}
+
+// Appends file i (`one`, loaded with label i) to `all`: vertex indices, `source` and
+// `polygon` offset; one's coordinates converted exactly when all's are rationals.
+template <class Coordinates, class OneCoordinates>
+void append(BasicTriangleSoup<Coordinates>& all, BasicTriangleSoup<OneCoordinates>&& one, std::size_t i,
+            const std::string& path) {
+  if (all.vertices.size() + one.vertices.size() > detail::kMaxIndexCount ||
+      all.triangles.size() + one.triangles.size() > detail::kMaxIndexCount)
+    refuse(
+        InputErrorKind::too_large, path,
+        "the input files together have more than " + std::to_string(detail::kMaxIndexCount) + " vertices or triangles");
+  const int offset = static_cast<int>(all.vertices.size());
+  const std::int64_t source_offset = static_cast<std::int64_t>(all.triangles.size());
+  if constexpr (std::is_same_v<Coordinates, OneCoordinates>) {
+    all.vertices.insert(all.vertices.end(), std::make_move_iterator(one.vertices.begin()),
+                        std::make_move_iterator(one.vertices.end()));
+  } else {
+    for (const Vec3& v : one.vertices) all.vertices.push_back(exactly(v));
+  }
+  if (!one.polygon.empty() || !all.polygon.empty()) {  // ids are source indices: offset them too
+    all.polygon.resize(all.triangles.size(), -1);
+    for (std::size_t t = 0; t < one.triangles.size(); ++t)
+      all.polygon.push_back(one.polygon.empty() || one.polygon[t] < 0 ? -1 : source_offset + one.polygon[t]);
+  }
+  for (std::size_t t = 0; t < one.triangles.size(); ++t) {
+    const Tri& tri = one.triangles[t];
+    all.triangles.push_back({tri[0] + offset, tri[1] + offset, tri[2] + offset});
+    all.label_set.push_back(static_cast<int>(i));
+    all.source.push_back(source_offset + one.source[t]);
+  }
+  all.label_sets.push_back(LabelSet{static_cast<std::uint32_t>(i)});
+}
+
+// The files concatenated (load_triangle_soup.h); exact as for load_file. Doubles until a
+// file has a coordinate that is not a double, then every coordinate exactly.
+AnyTriangleSoup load_files(const std::vector<std::string>& paths, bool exact) {
+  AnyTriangleSoup all;
   for (std::size_t i = 0; i < paths.size(); ++i) {
-    TriangleSoup one = load_triangle_soup(paths[i], static_cast<std::uint32_t>(i));
+    AnyTriangleSoup one = load_file(paths[i], static_cast<std::uint32_t>(i), exact);
     if (i == 0) {  // labels 0, label_sets {{0}}, source 0..: as they are (no copy)
       all = std::move(one);
       continue;
     }
-    if (all.vertices.size() + one.vertices.size() > detail::kMaxIndexCount ||
-        all.triangles.size() + one.triangles.size() > detail::kMaxIndexCount)
-      refuse(InputErrorKind::too_large, paths[i],
-             "the input files together have more than " + std::to_string(detail::kMaxIndexCount) +
-                 " vertices or triangles");
-    const int offset = static_cast<int>(all.vertices.size());
-    const std::int64_t source_offset = static_cast<std::int64_t>(all.triangles.size());
-    all.vertices.insert(all.vertices.end(), one.vertices.begin(), one.vertices.end());
-    if (!one.polygon.empty() || !all.polygon.empty()) {  // ids are source indices: offset them too
-      all.polygon.resize(all.triangles.size(), -1);
-      for (std::size_t t = 0; t < one.triangles.size(); ++t)
-        all.polygon.push_back(one.polygon.empty() || one.polygon[t] < 0 ? -1 : source_offset + one.polygon[t]);
-    }
-    for (std::size_t t = 0; t < one.triangles.size(); ++t) {
-      const Tri& tri = one.triangles[t];
-      all.triangles.push_back({tri[0] + offset, tri[1] + offset, tri[2] + offset});
-      all.label_set.push_back(static_cast<int>(i));
-      all.source.push_back(source_offset + one.source[t]);
-    }
-    all.label_sets.push_back(LabelSet{static_cast<std::uint32_t>(i)});
+    if (std::holds_alternative<ExactTriangleSoup>(one) && std::holds_alternative<TriangleSoup>(all))
+      all = exactly(std::move(std::get<TriangleSoup>(all)));
+    if (ExactTriangleSoup* exact_all = std::get_if<ExactTriangleSoup>(&all))
+      std::visit([&](auto& o) { append(*exact_all, std::move(o), i, paths[i]); }, one);
+    else  // both doubles
+      append(std::get<TriangleSoup>(all), std::move(std::get<TriangleSoup>(one)), i, paths[i]);
   }
   return all;
 }
+
+}  // namespace
+
+TriangleSoup load_triangle_soup(const std::string& path, std::uint32_t label) {
+  return std::get<TriangleSoup>(load_file(path, label, false));
+}
+
+TriangleSoup load_triangle_soups(const std::vector<std::string>& paths) {
+  return std::get<TriangleSoup>(load_files(paths, false));
+}
+
+AnyTriangleSoup load_mesh_files(const std::vector<std::string>& paths) { return load_files(paths, true); }
 
 }  // namespace arrangements

@@ -8,9 +8,12 @@
 //                read_exact_mesh too)
 //   LineReader   lines ending in LF, CRLF or CR (a UTF-8 BOM at the start is skipped)
 //   TokenReader  whitespace-separated tokens across lines, with their line numbers
-//   SoupBuilder  vertices and faces; polygons are triangulated by finish()
+//   SoupBuilder  vertices and faces; polygons are triangulated by finish(); coordinate
+//                tokens that are not decimals go to other_coordinate (exact rationals)
 // Numbers and messages: parse_real, parse_integer, quoted, refuse (mesh_file_checks.h).
 #pragma once
+
+#include <CGAL/Gmpq.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -18,6 +21,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "arrangements/triangle_soup.h"
@@ -146,12 +150,24 @@ class Tokens final : public TokenReader {
   using TokenReader::TokenReader;
 };
 
+// The most decimal digits of a rational coordinate's numerator or denominator.
+inline constexpr std::size_t kMaxRationalDigits = 100000;
+
 // The faces and vertices of one file, as its reader finds them.
+//   exact = false (load_triangle_soup): every coordinate must be a double; a rational that
+//           is not one is refused (unsupported_variant, naming load_mesh_files).
+//   exact = true (load_mesh_files): such rationals are kept exactly; after finish(),
+//           exact_vertices then holds every vertex (see below).
 class SoupBuilder {
  public:
-  explicit SoupBuilder(const std::string& path) : path_(path) {}
+  explicit SoupBuilder(const std::string& path, bool exact = false) : path_(path), exact_allowed_(exact) {}
 
+  // The vertices as doubles. Before finish(): a vertex with an exact coordinate has an
+  // unspecified double there. After finish(): empty when exact_vertices is not.
   std::vector<Vec3> vertices;
+  // After finish(): every vertex exactly (doubles converted exactly) when some coordinate
+  // of the file is not a double; empty otherwise.
+  std::vector<ExactVec3> exact_vertices;
   // Triangles in file order; a polygon of n corners holds n - 2 slots here, filled by
   // finish().
   std::vector<Tri> triangles;
@@ -160,8 +176,19 @@ class SoupBuilder {
 
   void add_vertex(const Vec3& v) {
     if (vertices.size() >= kMaxIndexCount) refuse_too_large("vertices");
+    if (pending_axes_ != 0) [[unlikely]]
+      keep_exact(v);
     vertices.push_back(v);
   }
+  // The slow path of coordinate `axis` (0, 1, 2) of the vertex being read (the next
+  // add_vertex), for a token that parse_real did not accept (r): a rational N/D
+  // (rational_token.h) that is exactly a double becomes `value` ("-0/N" is -0.0, as the
+  // decimal "-0" is); another rational is kept for that vertex (exact) or refused (not
+  // exact). Anything else is refused as refuse_coordinate refuses it, and so are a zero
+  // denominator, more than kMaxRationalDigits digits and |value| > DBL_MAX. `what` names
+  // the coordinate for messages ("vertex 7: coordinate ").
+  void other_coordinate(long line, const std::string& what, int axis, std::string_view token, RealParse r,
+                        double& value);
   // corners: at least 3 (the reader checks it and the indices, before finish()).
   void add_face(std::span<const int> corners) {
     if (corners.size() == 3) {
@@ -171,16 +198,26 @@ class SoupBuilder {
       add_polygon(corners);
     }
   }
-  // Triangulates the polygons (triangulate_polygon.h); every index must be valid.
+  // Gathers the exact vertices (if any) and triangulates the polygons
+  // (triangulate_polygon.h, on the exact coordinates when there are any); every index must
+  // be valid.
   void finish();
 
  private:
   [[noreturn]] void refuse_too_large(const char* what) const;
   void add_polygon(std::span<const int> corners);
+  void keep_exact(const Vec3& v);
+  template <class Coordinates>
+  void triangulate_polygons(const std::vector<Coordinates>& V);
   const std::string& path_;
+  bool exact_allowed_;
   std::vector<int> polygon_corners_;
   std::vector<std::size_t> polygon_start_;     // into polygon_corners_, per polygon
   std::vector<std::size_t> polygon_triangle_;  // its first slot in triangles, per polygon
+  // The vertices with a coordinate that is not a double, in index order.
+  std::vector<std::pair<std::size_t, ExactVec3>> exact_;
+  unsigned pending_axes_ = 0;  // bit k: the vertex being read has exact coordinate k
+  ExactVec3 pending_;
 };
 
 // The readers: the whole file, validated, into out (out.finish() is the caller's).

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -14,6 +15,7 @@
 
 #include "io/mesh_format.h"
 #include "io/mesh_reader.h"
+#include "io/rational_token.h"
 
 namespace arrangements {
 namespace {
@@ -42,7 +44,15 @@ struct Rational {
 };
 
 // Parses the grammar of read_exact_mesh.h; nullopt when the token does not follow it.
+// Rationals N/D: parse_rational (rational_token.h), shared with load_mesh_files; decimals:
+// their exact decimal value (load_mesh_files reads them as doubles instead).
 std::optional<CGAL::Gmpq> parse_number(std::string_view token) {
+  if (token.find('/') != std::string_view::npos) {  // N/D, as load_mesh_files reads it (no digit limit)
+    CGAL::Gmpq q;
+    if (detail::parse_rational(token, q, std::numeric_limits<std::size_t>::max()) != detail::RationalParse::ok)
+      return std::nullopt;
+    return q;
+  }
   bool negative = false;
   if (!token.empty() && (token.front() == '+' || token.front() == '-')) {
     negative = token.front() == '-';
@@ -51,45 +61,37 @@ std::optional<CGAL::Gmpq> parse_number(std::string_view token) {
   Rational r;
   mpz_ptr num = mpq_numref(r.q);
   mpz_ptr den = mpq_denref(r.q);
-  if (const std::size_t slash = token.find('/'); slash != std::string_view::npos) {
-    const std::string_view n = token.substr(0, slash), d = token.substr(slash + 1);
-    if (!all_digits(n) || !all_digits(d)) return std::nullopt;
-    mpz_set_str(num, std::string(n).c_str(), 10);
-    mpz_set_str(den, std::string(d).c_str(), 10);
-    if (mpz_sgn(den) == 0) return std::nullopt;
+  const std::size_t e_pos = token.find_first_of("eE");
+  const std::string_view mantissa = token.substr(0, e_pos);
+  long exponent = 0;
+  if (e_pos != std::string_view::npos) {
+    std::string_view e = token.substr(e_pos + 1);
+    bool e_negative = false;
+    if (!e.empty() && (e.front() == '+' || e.front() == '-')) {
+      e_negative = e.front() == '-';
+      e.remove_prefix(1);
+    }
+    if (!all_digits(e)) return std::nullopt;
+    for (char c : e) {
+      exponent = exponent * 10 + (c - '0');
+      if (exponent > kMaxDecimalExponent) return std::nullopt;
+    }
+    if (e_negative) exponent = -exponent;
+  }
+  const std::size_t point = mantissa.find('.');
+  const std::string_view whole = mantissa.substr(0, point);
+  const std::string_view fraction = point == std::string_view::npos ? std::string_view() : mantissa.substr(point + 1);
+  if (whole.empty() && fraction.empty()) return std::nullopt;
+  if ((!whole.empty() && !all_digits(whole)) || (!fraction.empty() && !all_digits(fraction))) return std::nullopt;
+  // value = (whole fraction as one integer) * 10^(exponent - #fraction digits)
+  mpz_set_str(num, (std::string(whole) + std::string(fraction)).c_str(), 10);
+  const long scale = exponent - static_cast<long>(fraction.size());
+  if (scale >= 0) {
+    mpz_ui_pow_ui(den, 10, static_cast<unsigned long>(scale));
+    mpz_mul(num, num, den);
+    mpz_set_ui(den, 1);
   } else {
-    const std::size_t e_pos = token.find_first_of("eE");
-    const std::string_view mantissa = token.substr(0, e_pos);
-    long exponent = 0;
-    if (e_pos != std::string_view::npos) {
-      std::string_view e = token.substr(e_pos + 1);
-      bool e_negative = false;
-      if (!e.empty() && (e.front() == '+' || e.front() == '-')) {
-        e_negative = e.front() == '-';
-        e.remove_prefix(1);
-      }
-      if (!all_digits(e)) return std::nullopt;
-      for (char c : e) {
-        exponent = exponent * 10 + (c - '0');
-        if (exponent > kMaxDecimalExponent) return std::nullopt;
-      }
-      if (e_negative) exponent = -exponent;
-    }
-    const std::size_t point = mantissa.find('.');
-    const std::string_view whole = mantissa.substr(0, point);
-    const std::string_view fraction = point == std::string_view::npos ? std::string_view() : mantissa.substr(point + 1);
-    if (whole.empty() && fraction.empty()) return std::nullopt;
-    if ((!whole.empty() && !all_digits(whole)) || (!fraction.empty() && !all_digits(fraction))) return std::nullopt;
-    // value = (whole fraction as one integer) * 10^(exponent - #fraction digits)
-    mpz_set_str(num, (std::string(whole) + std::string(fraction)).c_str(), 10);
-    const long scale = exponent - static_cast<long>(fraction.size());
-    if (scale >= 0) {
-      mpz_ui_pow_ui(den, 10, static_cast<unsigned long>(scale));
-      mpz_mul(num, num, den);
-      mpz_set_ui(den, 1);
-    } else {
-      mpz_ui_pow_ui(den, 10, static_cast<unsigned long>(-scale));
-    }
+    mpz_ui_pow_ui(den, 10, static_cast<unsigned long>(-scale));
   }
   mpq_canonicalize(r.q);
   if (negative) mpq_neg(r.q, r.q);

@@ -81,7 +81,8 @@ class ObjReader {
     }
   }
 
-  // x y z; more numbers (w, colours) are ignored.
+  // x y z (decimals, or rationals: SoupBuilder::other_coordinate); more numbers (w,
+  // colours) are ignored.
   void vertex(long line, LineTokens& tokens) {
     Vec3 v;
     for (int axis = 0; axis < 3; ++axis) {
@@ -90,9 +91,9 @@ class ObjReader {
         refuse_at_line(InputErrorKind::malformed, path_, line,
                        "vertex " + std::to_string(out_.vertices.size() + 1) + " has fewer than 3 coordinates");
       const RealParse r = parse_real(token, v[axis]);
-      if (r != RealParse::ok)
-        refuse_coordinate(path_, line, r, "vertex " + std::to_string(out_.vertices.size() + 1) + ": coordinate ",
-                          token);
+      if (r != RealParse::ok)  // a rational, or refused
+        out_.other_coordinate(line, "vertex " + std::to_string(out_.vertices.size() + 1) + ": coordinate ", axis, token,
+                              r, v[axis]);
     }
     out_.add_vertex(v);
   }

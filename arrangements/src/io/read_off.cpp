@@ -42,8 +42,10 @@ class OffReader {
       for (std::size_t i = 0; i < numbers_per_vertex; ++i) {
         double value;
         const RealParse r = parse_real(entries_[i], value);
-        if (r != RealParse::ok)
-          refuse_coordinate(path_, line_, r, what() + (i < 3 ? ": coordinate " : ": normal coordinate "), entries_[i]);
+        if (r != RealParse::ok && i < 3)  // a rational, or refused
+          out_.other_coordinate(line_, what() + ": coordinate ", static_cast<int>(i), entries_[i], r, value);
+        else if (r != RealParse::ok)
+          refuse_coordinate(path_, line_, r, what() + ": normal coordinate ", entries_[i]);
         if (i < 3) v[i] = value;
       }
       if (h_.colors) check_colors(numbers_per_vertex, vertex_colors_, what());

@@ -1,7 +1,8 @@
 // arrangements/src/io/triangulate_polygon.h
 //
 // bool triangulate_polygon(V, corners, out): append a triangulation of one polygon face.
-//   V        the file's vertices (finite doubles)
+//   V        the file's vertices: finite doubles (Vec3) or exact rationals (ExactVec3,
+//            for load_mesh_files); the same rules for both, every predicate exact
 //   corners  the face's corners c0 .. c(n-1), n >= 3, indices into V (valid)
 //   out      receives exactly n - 2 triangles of corner indices (no new points), in a
 //            deterministic order that depends only on the corners' coordinates and order
@@ -25,9 +26,12 @@
 // i = 1 .. n-2. Triangles (n = 3) are appended as they are.
 //
 // Exactness: the decision "simple or not" and every orientation used by the triangulation
-// are exact predicates (no rounding decides anything); the projection axis is chosen in
-// floating point, which only selects among valid triangulations.
-// Cost: O(n log n) expected for a simple projection, O(n) for the fallback.
+// are exact predicates (no rounding decides anything): for doubles tritri::orient2d and
+// CGAL's Epick, for rationals rational arithmetic (CGAL::Simple_cartesian<Gmpq>). The
+// projection axis is chosen from the Newell normal, in long double for doubles (which only
+// selects among valid triangulations) and exactly for rationals.
+// Cost: O(n log n) expected predicates for a simple projection, O(n) for the fallback
+// (rationals: each predicate costs rational arithmetic on the coordinates' sizes).
 #pragma once
 
 #include <span>
@@ -38,5 +42,6 @@
 namespace arrangements {
 
 bool triangulate_polygon(const std::vector<Vec3>& V, std::span<const int> corners, std::vector<Tri>& out);
+bool triangulate_polygon(const std::vector<ExactVec3>& V, std::span<const int> corners, std::vector<Tri>& out);
 
 }  // namespace arrangements

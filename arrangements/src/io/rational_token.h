@@ -1,0 +1,42 @@
+// arrangements/src/io/rational_token.h (internal to the mesh readers: SoupBuilder for
+// load_mesh_files, and read_exact_mesh)
+//
+// The rational coordinate tokens that write_mesh writes with exact = true, and the tests a
+// loader makes on their values.
+//
+// RationalParse parse_rational(token, value, max_digits)
+//   token       one whitespace-free token
+//   value       receives the rational, in lowest terms (only when ok is returned)
+//   max_digits  the most decimal digits, as written (leading zeros count), allowed in the
+//               numerator and in the denominator
+// returns ok for [+-]? digits "/" digits with a denominator that is not zero ("2/6" is
+// 1/3, "-0/5" is 0); not_rational for any other token (decimals too: "1", "1.5/2", "1/",
+// "/2", "1/2/3", "0x1/3"); huge when the grammar holds but a part has more than max_digits
+// digits (checked before any arithmetic); zero_denominator for "N/0".
+// Cost: linear in the token's length for the checks; GMP's conversion of the digits
+// (subquadratic) for ok.
+//
+// bool beyond_double_range(q): |q| > the largest finite double (DBL_MAX), exactly.
+//
+// bool exact_double(q, d): true, with d = q, when the rational q is exactly a double
+// (a dyadic rational n / 2^k with at most 53 significant bits, its lowest bit at 2^-1074
+// or above, and |q| <= DBL_MAX); false otherwise (d untouched). Zero gives +0.0.
+// Cost: O(size of q) bit scans; no rounding anywhere.
+#pragma once
+
+#include <CGAL/Gmpq.h>
+
+#include <cstddef>
+#include <string_view>
+
+namespace arrangements::detail {
+
+enum class RationalParse { ok, not_rational, huge, zero_denominator };
+
+RationalParse parse_rational(std::string_view token, CGAL::Gmpq& value, std::size_t max_digits);
+
+bool beyond_double_range(const CGAL::Gmpq& q);
+
+bool exact_double(const CGAL::Gmpq& q, double& d);
+
+}  // namespace arrangements::detail
