@@ -46,7 +46,7 @@ ExactOutputMesh public_mesh(BasicOutputMesh<ExactModel::Point>&& mesh) {
 // The stages for point model M; keep (double model only) receives the soup and graph.
 template <class M, class Result>
 Result run_stages(const BasicTriangleSoup<typename M::Input>& input, const ArrangeOptions& options,
-                  PipelineInternals* keep) {
+                  BasicPipelineInternals<M>* keep) {
   if (options.threads > kMaxThreads)  // oneTBB crashes or aborts on huge arenas (thread_count.h)
     throw std::invalid_argument("arrange: threads must be at most " + std::to_string(kMaxThreads) + ", got " +
                                 std::to_string(options.threads));
@@ -116,11 +116,9 @@ Result run_stages(const BasicTriangleSoup<typename M::Input>& input, const Arran
   s.euler = c.euler;
   s.t_output_s = seconds_since(t0);
 
-  if constexpr (std::is_same_v<M, DoubleModel>) {
-    if (keep) {
-      keep->soup = std::move(soup);
-      keep->graph = std::move(graph);
-    }
+  if (keep) {
+    keep->soup = std::move(soup);
+    keep->graph = std::move(graph);
   }
   s.t_total_s = seconds_since(start);
   s.peak_rss_mb = peak_rss_mb();
@@ -152,8 +150,9 @@ ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& opti
   return run_stages<DoubleModel, ArrangeResult>(input, options, keep);
 }
 
-ExactArrangeResult run_pipeline(const ExactTriangleSoup& input, const ArrangeOptions& options) {
-  return run_stages<ExactModel, ExactArrangeResult>(input, options, nullptr);
+ExactArrangeResult run_pipeline(const ExactTriangleSoup& input, const ArrangeOptions& options,
+                                BasicPipelineInternals<ExactModel>* keep) {
+  return run_stages<ExactModel, ExactArrangeResult>(input, options, keep);
 }
 
 void validate_soup(const TriangleSoup& in) {
@@ -173,7 +172,7 @@ ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) 
 
 ExactArrangeResult arrange(const ExactTriangleSoup& input, const ArrangeOptions& options) {
   validate_soup(input);
-  return run_pipeline(input, options);
+  return run_pipeline(input, options, nullptr);
 }
 
 ArrangeResult detail::arrange_validated(const TriangleSoup& input, const ArrangeOptions& options) {
@@ -181,7 +180,7 @@ ArrangeResult detail::arrange_validated(const TriangleSoup& input, const Arrange
 }
 
 ExactArrangeResult detail::arrange_validated(const ExactTriangleSoup& input, const ArrangeOptions& options) {
-  return run_pipeline(input, options);
+  return run_pipeline(input, options, nullptr);
 }
 
 void add_write_time(ArrangeStats& s, double seconds) {

@@ -10,18 +10,23 @@
 
 #include "arrangements/arrange.h"
 #include "arrangements/triangle_soup.h"
+#include "models/double_model.h"
+#include "models/exact_model.h"
 #include "stages/4_intersection_graph.h"
 
 namespace arrangements {
 
-struct PipelineInternals {
-  TriangleSoup soup;        // after preprocessing (stage 1)
-  IntersectionGraph graph;  // after the intersection graph (stage 4)
+template <class M>
+struct BasicPipelineInternals {
+  BasicTriangleSoup<typename M::Vertex> soup;         // after preprocessing (stage 1)
+  BasicIntersectionGraph<typename M::Point> graph;    // after the intersection graph (stage 4)
 };
+using PipelineInternals = BasicPipelineInternals<DoubleModel>;
 
 ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& options, PipelineInternals* keep);
 
 // The exact path (ExactModel): the same stages on rational points.
-ExactArrangeResult run_pipeline(const ExactTriangleSoup& input, const ArrangeOptions& options);
+ExactArrangeResult run_pipeline(const ExactTriangleSoup& input, const ArrangeOptions& options,
+                                BasicPipelineInternals<ExactModel>* keep);
 
 }  // namespace arrangements

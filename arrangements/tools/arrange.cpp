@@ -12,6 +12,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "arrangements/arrange.h"
@@ -33,6 +34,9 @@ Computes the mesh arrangement of one or more triangle soups exactly (after Cherc
 2020): every triangle is split along its intersections with the others, so that the output
 triangles meet only at shared vertices and shared edges. Each INPUT (.obj .off .stl .ply,
 ASCII or binary) is labelled by its position: the first file has label 0, the second 1, ...
+OBJ and OFF coordinates may be exact rationals N/D (what --exact writes): input with any
+coordinate that is not a double is arranged on the exact path (every point rational), so
+an exact arrangement can be arranged again, with more meshes, as often as wanted.
 
 Stages: load, exact preprocessing (merge duplicate vertices, remove degenerate and
 duplicate triangles), candidate pairs (bounding boxes), classification of every candidate
@@ -141,32 +145,38 @@ int main(int argc, char** argv) {
 
   try {
     const auto t0 = std::chrono::steady_clock::now();
-    const TriangleSoup input = load_triangle_soups(inputs);
+    // Double input takes the fast path; any rational coordinate the exact one.
+    const AnyTriangleSoup input = load_mesh_files(inputs);
     const double t_load = seconds_since(t0);
     ArrangeOptions options;
     options.classifier = classifier == "tritri" ? Classifier::Tritri : Classifier::Native;
     options.threads = workers;
     options.scale = scale;
-    // The loader checked every fact about the input as it read it (validate once).
-    ArrangeResult result = detail::arrange_validated(input, options);
-    ArrangeStats& s = result.stats;
-    add_load_time(s, t_load);
-    if (output) {
-      const auto tw = std::chrono::steady_clock::now();
-      WriteOptions wo;
-      wo.exact = exact;
-      write_mesh(*output, result.mesh, wo);
-      add_write_time(s, seconds_since(tw));
-    }
-    if (stats) std::printf("%s\n", stats_json(s).c_str());
-    if (check) {
-      const ArrangementCheck c = check_arrangement(result.mesh);
-      std::fprintf(stderr, "arrange: check: %zu overlapping output pairs, %zu violations, %zu degenerate triangles\n",
-                   c.pairs_checked, c.violations, c.degenerate_triangles);
-      for (const auto& e : c.examples) std::fprintf(stderr, "  %s\n", e.c_str());
-      if (!c.ok()) return 3;
-    }
-    return 0;
+    return std::visit(
+        [&](const auto& soup) {
+          // The loader checked every fact about the input as it read it (validate once).
+          auto result = detail::arrange_validated(soup, options);
+          ArrangeStats& s = result.stats;
+          add_load_time(s, t_load);
+          if (output) {
+            const auto tw = std::chrono::steady_clock::now();
+            WriteOptions wo;
+            wo.exact = exact;
+            write_mesh(*output, result.mesh, wo);
+            add_write_time(s, seconds_since(tw));
+          }
+          if (stats) std::printf("%s\n", stats_json(s).c_str());
+          if (check) {
+            const ArrangementCheck c = check_arrangement(result.mesh);
+            std::fprintf(stderr,
+                         "arrange: check: %zu overlapping output pairs, %zu violations, %zu degenerate triangles\n",
+                         c.pairs_checked, c.violations, c.degenerate_triangles);
+            for (const auto& e : c.examples) std::fprintf(stderr, "  %s\n", e.c_str());
+            if (!c.ok()) return 3;
+          }
+          return 0;
+        },
+        input);
   } catch (const InputError& e) {
     std::fprintf(stderr, "arrange: %s\n", e.what());
     return 1;

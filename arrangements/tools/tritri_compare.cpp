@@ -13,6 +13,8 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include <tritri/implicit_predicates.h>
@@ -68,8 +70,6 @@ constexpr long long kMaxRepeat = 1000000, kMaxDifferences = 1000000;
   std::exit(2);
 }
 
-using arrangements::ArrangeResult;
-using arrangements::IntersectionGraph;
 
 std::string json_string(const std::string& s) {
   std::string out = "\"";
@@ -90,12 +90,13 @@ std::string json_string(const std::string& s) {
 
 // Canonical ids: input vertices keep theirs; new points are numbered by their rank in
 // the exact lexicographic order.
-std::vector<int> canonical_ids(const IntersectionGraph& g, std::vector<int>& sorted_new) {
+template <class M, class Graph>
+std::vector<int> canonical_ids(const Graph& g, std::vector<int>& sorted_new) {
   const int nv = g.num_input_vertices;
   sorted_new.resize(g.points.size() - nv);
   std::iota(sorted_new.begin(), sorted_new.end(), nv);
   std::sort(sorted_new.begin(), sorted_new.end(),
-            [&](int a, int b) { return tritri::compare_xyz(g.points[a], g.points[b]) < 0; });
+            [&](int a, int b) { return M::compare_xyz(g.points[a], g.points[b]) < 0; });
   std::vector<int> id(g.points.size());
   std::iota(id.begin(), id.begin() + nv, 0);
   for (std::size_t r = 0; r < sorted_new.size(); ++r) id[sorted_new[r]] = nv + static_cast<int>(r);
@@ -155,8 +156,11 @@ int main(int argc, char** argv) {
 
   try {
     const auto t0 = std::chrono::steady_clock::now();
-    const TriangleSoup input = load_triangle_soups(inputs);
+    // Double input takes the fast path (DoubleModel); any rational coordinate the exact one.
+    const AnyTriangleSoup any_input = load_mesh_files(inputs);
     const double t_load = seconds_since(t0);
+    return std::visit([&](const auto& input) -> int {
+    using M = std::conditional_t<std::is_same_v<std::decay_t<decltype(input)>, TriangleSoup>, DoubleModel, ExactModel>;
     // Start TBB's workers before timing anything, so that the first run (native) does not
     // pay for creating them.
     {
@@ -170,10 +174,10 @@ int main(int argc, char** argv) {
     options.scale = scale;
     options.count_predicates = true;
     options.classifier = Classifier::Native;
-    PipelineInternals native_internals, tritri_internals;
-    ArrangeResult native = run_pipeline(input, options, &native_internals);
+    BasicPipelineInternals<M> native_internals, tritri_internals;
+    auto native = run_pipeline(input, options, &native_internals);
     options.classifier = Classifier::Tritri;
-    ArrangeResult tritri_run = run_pipeline(input, options, &tritri_internals);
+    auto tritri_run = run_pipeline(input, options, &tritri_internals);
     // Repeated runs, alternating, keep each stage's fastest time (less noise on a busy
     // machine); the results themselves are deterministic.
     auto keep_min = [](ArrangeStats& best, const ArrangeStats& s) {
@@ -191,8 +195,8 @@ int main(int argc, char** argv) {
     add_load_time(native.stats, t_load);  // the one load, shared by both
     add_load_time(tritri_run.stats, t_load);
 
-    IntersectionGraph& gn = native_internals.graph;
-    IntersectionGraph& gt = tritri_internals.graph;
+    auto& gn = native_internals.graph;
+    auto& gt = tritri_internals.graph;
     if (inject && gt.points.size() > static_cast<std::size_t>(gt.num_input_vertices)) {
       gt.points.pop_back();
       const int dropped = static_cast<int>(gt.points.size());
@@ -210,17 +214,17 @@ int main(int argc, char** argv) {
 
     // Points, as exact sets.
     std::vector<int> sorted_n, sorted_t;
-    const std::vector<int> id_n = canonical_ids(gn, sorted_n);
-    const std::vector<int> id_t = canonical_ids(gt, sorted_t);
+    const std::vector<int> id_n = canonical_ids<M>(gn, sorted_n);
+    const std::vector<int> id_t = canonical_ids<M>(gt, sorted_t);
     bool points_equal = sorted_n.size() == sorted_t.size();
     if (!points_equal)
       differ("intersection points: native " + std::to_string(sorted_n.size()) + ", tritri " +
              std::to_string(sorted_t.size()));
     for (std::size_t r = 0, e = std::min(sorted_n.size(), sorted_t.size()); r < e; ++r)
-      if (tritri::compare_xyz(gn.points[sorted_n[r]], gt.points[sorted_t[r]]) != 0) {
+      if (M::compare_xyz(gn.points[sorted_n[r]], gt.points[sorted_t[r]]) != 0) {
         if (points_equal) {
-          const auto p = tritri::to_double(gn.points[sorted_n[r]]);
-          const auto q = tritri::to_double(gt.points[sorted_t[r]]);
+          const auto p = M::to_double(gn.points[sorted_n[r]]);
+          const auto q = M::to_double(gt.points[sorted_t[r]]);
           char buf[256];
           std::snprintf(buf, sizeof buf,
                         "intersection point %zu in exact order: native (%.17g, %.17g, %.17g), tritri (%.17g, %.17g, "
@@ -291,6 +295,7 @@ int main(int argc, char** argv) {
       for (const auto& d : differences) std::printf("  difference: %s\n", d.c_str());
     }
     return agree ? 0 : 1;
+    }, any_input);
   } catch (const InputError& e) {
     std::fprintf(stderr, "tritri-compare: %s\n", e.what());
     return 2;

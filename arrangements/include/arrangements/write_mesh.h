@@ -5,7 +5,7 @@
 //
 // write_mesh(path, mesh, options = {})
 //   path     where to write; the extension (any case) chooses the format: .obj, .off, .ply
-//   mesh     an OutputMesh (output_mesh.h)
+//   mesh     an OutputMesh or an ExactOutputMesh (output_mesh.h; the same files either way)
 //   options  exact = false: each coordinate is to_double() of the vertex (the nearest
 //            double), printed with 17 significant digits, so that reading it back as a
 //            double gives the same double (binary doubles in PLY);
@@ -26,7 +26,8 @@
 //        "t,source[t],l1 l2 ... lk" with label_sets[label_set[t]] space-separated
 //        (empty for an empty label set).
 //
-// Exact coordinates (options.exact): each coordinate X is the rational number to_exact()
+// Exact coordinates (options.exact): each coordinate X is the rational number (to_exact()
+// of an implicit point)
 // written in lowest terms as "N/D" (N, D decimal integers, N with a '-' when negative,
 // D >= 2) or as "N" when it is an integer (D = 1). Explicit vertices are written the same
 // way (a double is the dyadic rational it holds, e.g. 0.1 is
@@ -67,5 +68,6 @@ struct WriteOptions {
 };
 
 void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOptions& options = {});
+void write_mesh(const std::string& path, const ExactOutputMesh& mesh, const WriteOptions& options = {});
 
 }  // namespace arrangements

@@ -1,4 +1,4 @@
-// Output: OutputMesh -> OBJ / OFF / PLY file and provenance (see write_mesh.h).
+// Output: OutputMesh / ExactOutputMesh -> OBJ / OFF / PLY file and provenance (see write_mesh.h).
 #include "arrangements/write_mesh.h"
 
 #include <gmp.h>
@@ -30,7 +30,8 @@ namespace fs = std::filesystem;
 using detail::AtomicFile;
 using detail::MeshFormat;
 
-void check_mesh(const std::string& path, const OutputMesh& mesh) {
+template <class Mesh>
+void check_mesh(const std::string& path, const Mesh& mesh) {
   const std::size_t nt = mesh.triangles.size();
   if (mesh.source.size() != nt || mesh.label_set.size() != nt)
     throw std::invalid_argument(path + ": OutputMesh has " + std::to_string(nt) + " triangles but " +
@@ -87,11 +88,15 @@ void append_rational(AtomicFile& f, const CGAL::Gmpq& q, std::string& scratch) {
   }
 }
 
-// The vertex coordinates as doubles, refusing those that overflow.
-std::vector<Vec3> rounded_vertices(const std::string& path, const OutputMesh& mesh) {
+std::array<CGAL::Gmpq, 3> exact_coordinates(const tritri::ImplicitPoint& p) { return tritri::to_exact(p); }
+const ExactVec3& exact_coordinates(const ExactVec3& p) { return p; }
+
+// The vertex coordinates as doubles (correctly rounded), refusing those that overflow.
+template <class Mesh>
+std::vector<Vec3> rounded_vertices(const std::string& path, const Mesh& mesh) {
   std::vector<Vec3> out;
   out.reserve(mesh.vertices.size());
-  for (const tritri::ImplicitPoint& p : mesh.vertices) {
+  for (const auto& p : mesh.vertices) {
     out.push_back(tritri::to_double(p));
     for (double c : out.back())
       if (!std::isfinite(c))
@@ -110,20 +115,22 @@ void append_coordinates(AtomicFile& f, const Vec3& v) {
 }
 
 // "X Y Z" of vertex i: exact rationals, or the rounded doubles.
-void append_coordinates(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& rounded, bool exact,
+template <class Mesh>
+void append_coordinates(AtomicFile& f, const Mesh& mesh, const std::vector<Vec3>& rounded, bool exact,
                         std::size_t i, std::string& scratch) {
   if (!exact) {
     append_coordinates(f, rounded[i]);
     return;
   }
-  const std::array<CGAL::Gmpq, 3> q = tritri::to_exact(mesh.vertices[i]);
+  const std::array<CGAL::Gmpq, 3> q = exact_coordinates(mesh.vertices[i]);
   for (int k = 0; k < 3; ++k) {
     if (k) f.append(' ');
     append_rational(f, q[k], scratch);
   }
 }
 
-void write_obj(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& rounded, bool exact) {
+template <class Mesh>
+void write_obj(AtomicFile& f, const Mesh& mesh, const std::vector<Vec3>& rounded, bool exact) {
   std::string scratch;
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     f.append("v ");
@@ -164,13 +171,15 @@ void write_off_text(AtomicFile& f, std::size_t vertex_count, const std::vector<T
   }
 }
 
-void write_off(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& rounded, bool exact) {
+template <class Mesh>
+void write_off(AtomicFile& f, const Mesh& mesh, const std::vector<Vec3>& rounded, bool exact) {
   std::string scratch;
   write_off_text(f, mesh.vertices.size(), mesh.triangles,
                  [&](std::size_t i) { append_coordinates(f, mesh, rounded, exact, i, scratch); });
 }
 
-void write_provenance(AtomicFile& f, const OutputMesh& mesh) {
+template <class Mesh>
+void write_provenance(AtomicFile& f, const Mesh& mesh) {
   f.append("triangle,source,labels\n");
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     append_integer(f, t);
@@ -201,13 +210,15 @@ void append_le_double(AtomicFile& f, double v) {
 }
 void append_le_int32(AtomicFile& f, std::int32_t v) { append_le(f, static_cast<std::uint32_t>(v), 4); }
 
-bool sources_fit_int(const OutputMesh& mesh) {
+template <class Mesh>
+bool sources_fit_int(const Mesh& mesh) {
   for (std::int64_t s : mesh.source)
     if (s < std::numeric_limits<std::int32_t>::min() || s > std::numeric_limits<std::int32_t>::max()) return false;
   return true;
 }
 
-void check_ply_limits(const std::string& path, const OutputMesh& mesh) {
+template <class Mesh>
+void check_ply_limits(const std::string& path, const Mesh& mesh) {
   constexpr std::int64_t kExactInDouble = std::int64_t{1} << 53;
   for (std::size_t t = 0; t < mesh.source.size(); ++t)
     if (mesh.source[t] > kExactInDouble || mesh.source[t] < -kExactInDouble)
@@ -218,7 +229,8 @@ void check_ply_limits(const std::string& path, const OutputMesh& mesh) {
       throw std::invalid_argument(path + ": a label set has more than 2^32 - 1 labels");
 }
 
-void write_ply(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& rounded) {
+template <class Mesh>
+void write_ply(AtomicFile& f, const Mesh& mesh, const std::vector<Vec3>& rounded) {
   const bool int_source = sources_fit_int(mesh);
   f.append("ply\nformat binary_little_endian 1.0\n");
   f.append("comment source: the input triangle each face lies in; labels: its label set\n");
@@ -244,9 +256,9 @@ void write_ply(AtomicFile& f, const OutputMesh& mesh, const std::vector<Vec3>& r
   }
 }
 
-}  // namespace
 
-void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOptions& options) {
+template <class Mesh>
+void write_any_mesh(const std::string& path, const Mesh& mesh, const WriteOptions& options) {
   // Everything that can be refused is refused before a file is created.
   const MeshFormat format = detail::format_of_or_refuse(path, detail::kWriteFormats, "write_mesh writes");
   if (format == MeshFormat::ply && options.exact)
@@ -289,6 +301,16 @@ void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOpti
     if (side) ::unlink(side_path.c_str());
     throw;
   }
+}
+
+}  // namespace
+
+void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOptions& options) {
+  write_any_mesh(path, mesh, options);
+}
+
+void write_mesh(const std::string& path, const ExactOutputMesh& mesh, const WriteOptions& options) {
+  write_any_mesh(path, mesh, options);
 }
 
 void write_off(const std::string& path, const std::vector<Vec3>& V, const std::vector<Tri>& F) {

@@ -40,6 +40,10 @@ struct DoubleModel {
   static constexpr bool kProjectionFirst = false;  // stage 2: see detect_pairs
   static constexpr bool kCanScale = true;
 
+  // Conversions of any point: exact rationals, nearest doubles (correctly rounded).
+  static ExactVec3 to_exact(const Point& p) { return tritri::to_exact(p); }
+  static Vec3 to_double(const Point& p) { return tritri::to_double(p); }
+
   // Stage 1: -0.0 becomes +0.0 (equal positions, equal bits).
   static Vertex vertex(const Input& p) { return {p[0] + 0.0, p[1] + 0.0, p[2] + 0.0}; }
   static std::uint64_t hash_bits(std::uint64_t h, const Vertex& p) {

@@ -6,8 +6,8 @@
 // auxiliary), is a CGAL::Epeck point whose rational coordinates are computed when it is
 // made (tritri/detail/homogeneous.h: the same formulas as the implicit points of the
 // double path, evaluated in CGAL's exact rational type) and held with a certified
-// interval approximation; predicates are Epeck's (tritri::CgalKernel<CGAL::Epeck>): the
-// intervals decide almost every sign, the rationals the rest. Exact for any rational
+// interval approximation; predicates are Epeck's (EpeckKernel below): the intervals
+// decide almost every sign, the rationals the rest. Exact for any rational
 // input; thread-safe (CGAL >= 5.5 lazy objects are reference counted atomically and
 // evaluated once).
 // Cost: a new point costs one rational evaluation of its formula (numbers grow with the
@@ -34,11 +34,38 @@
 
 namespace arrangements {
 
+// tritri's kernel concept on Epeck points, without constructions: orient3d, equal and
+// less are Epeck's filtered predicates; orient2d evaluates the projected determinant on
+// the points' intervals and, when that cannot decide, on their rationals (CGAL's
+// projection traits would construct lazy 2D points for every call).
+struct EpeckKernel {
+  using Point = CGAL::Epeck::Point_3;
+  static tritri::Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
+    return tritri::CgalKernel<CGAL::Epeck>::orient3d(a, b, c, d);
+  }
+  static tritri::Sign orient2d(const Point& a, const Point& b, const Point& c, tritri::Plane plane) {
+    const int i = plane == tritri::Plane::XY ? 0 : (plane == tritri::Plane::YZ ? 1 : 2), j = (i + 1) % 3;
+    {
+      CGAL::Protect_FPU_rounding<true> upward;
+      const auto &A = a.approx(), &B = b.approx(), &C = c.approx();
+      const auto d = (B[i] - A[i]) * (C[j] - A[j]) - (B[j] - A[j]) * (C[i] - A[i]);
+      if (d.inf() > 0) return tritri::Sign::Positive;
+      if (d.sup() < 0) return tritri::Sign::Negative;
+    }
+    const auto &A = a.exact(), &B = b.exact(), &C = c.exact();
+    using ET = std::decay_t<decltype(A[0])>;  // named: gmpxx expression templates must not outlive their operands
+    const ET d = (B[i] - A[i]) * (C[j] - A[j]) - (B[j] - A[j]) * (C[i] - A[i]);
+    return d > 0 ? tritri::Sign::Positive : (d < 0 ? tritri::Sign::Negative : tritri::Sign::Zero);
+  }
+  static bool equal(const Point& a, const Point& b) { return a == b; }
+  static bool less(const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; }
+};
+
 struct ExactModel {
   using Input = ExactVec3;
   using Vertex = CGAL::Epeck::Point_3;
   using Point = Vertex;
-  using Kernel = tritri::CgalKernel<CGAL::Epeck>;
+  using Kernel = EpeckKernel;
   struct Key {};
   using Box = tritri::BoxBounds;
   struct PlaneCache {};
@@ -60,6 +87,10 @@ struct ExactModel {
     return {to_gmpq(e.x()), to_gmpq(e.y()), to_gmpq(e.z())};
   }
 
+  // Conversions of any point: exact rationals, nearest doubles (correctly rounded).
+  static ExactVec3 to_exact(const Point& p) { return to_input(p); }
+  static Vec3 to_double(const Point& p) { return tritri::to_double(to_input(p)); }
+
   // Stage 1. Equal rationals have equal certified intervals (computed from the rational),
   // so hashing the interval ends is consistent with exact equality.
   static Vertex vertex(const Input& p) { return make(to_et(p[0]), to_et(p[1]), to_et(p[2])); }
@@ -77,7 +108,7 @@ struct ExactModel {
   }
 
   static std::pair<tritri::Plane, int> projection(const Vertex& a, const Vertex& b, const Vertex& c) {
-    return tritri::projection(Kernel{}, a, b, c, tritri::dominant_plane(middle(a), middle(b), middle(c)));
+    return tritri::projection(Kernel{}, a, b, c, tritri::dominant_plane(a, b, c));
   }
 
   // Stage 2: conservative boxes from the intervals; planes are not cached.
@@ -156,11 +187,6 @@ struct ExactModel {
       mpq_set(e.get_mpq_t(), x.mpq());
       return e;
     }
-  }
-  static Vec3 middle(const Vertex& p) {
-    const auto& a = p.approx();
-    return {0.5 * a[0].inf() + 0.5 * a[0].sup(), 0.5 * a[1].inf() + 0.5 * a[1].sup(),
-            0.5 * a[2].inf() + 0.5 * a[2].sup()};
   }
   static Point from_homogeneous(const tritri::detail::Homogeneous<ET>& h) {
     if (h.w == 0) throw std::logic_error("ExactModel: undefined intersection point");

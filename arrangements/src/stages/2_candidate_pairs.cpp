@@ -97,11 +97,13 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
     int in_b[3];
     const bool shares = tritri::detail::shared_corners(a, b, in_b) > 0;
     if constexpr (M::kProjectionFirst) {
-      // Neighbours in a projection first: for rational points an exact zero (coplanar
-      // pieces of one input triangle, common in an arrangement arranged again) costs far
-      // more than the orient2d that the intervals decide.
+      // Projections first: for rational points an exact zero (coplanar pieces of one
+      // input triangle, common in an arrangement arranged again) costs far more than the
+      // orient2d that the intervals decide.
       const std::array<Vertex, 3> pa{V[a[0]], V[a[1]], V[a[2]]}, pb{V[b[0]], V[b[1]], V[b[2]]};
-      if (shares && tritri::meet_in_shared_in_projection(typename M::Kernel{}, pa, a, pb, b)) return;
+      if (shares ? tritri::meet_in_shared_in_projection(typename M::Kernel{}, pa, a, pb, b)
+                 : tritri::separated_in_projection(typename M::Kernel{}, pa, pb))
+        return;
     }
     bool settled = shares ? tritri::meet_only_in_shared_by_sides(a, b, side) : tritri::separated_by_plane(side);
     if (!settled) {

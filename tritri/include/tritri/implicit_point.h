@@ -224,11 +224,10 @@ inline std::array<CGAL::Gmpq, 3> to_exact(const ImplicitPoint& p) {
 }
 
 // The coordinates rounded to the nearest double (ties to even), subnormals included:
-// exact for explicit points, correctly rounded from the exact rational for implicit ones
+// of rational coordinates, or of a point: exact for explicit points, correctly rounded
+// from the exact rational for implicit ones
 // (MPFR's exponent range is per thread, so this is thread-safe). Overflow gives +-inf.
-inline std::array<double, 3> to_double(const ImplicitPoint& p) {
-  if (p.is_explicit()) return p.approx();
-  const auto q = to_exact(p);
+inline std::array<double, 3> to_double(const std::array<CGAL::Gmpq, 3>& q) {
   std::array<double, 3> out;
   // Round once, to the double format including its subnormal range: MPFR's exponent range
   // set to double's and mpfr_subnormalize (rounding to 53 bits first and then to a
@@ -247,6 +246,11 @@ inline std::array<double, 3> to_double(const ImplicitPoint& p) {
   mpfr_set_emin(old_emin);
   mpfr_set_emax(old_emax);
   return out;
+}
+
+inline std::array<double, 3> to_double(const ImplicitPoint& p) {
+  if (p.is_explicit()) return p.approx();
+  return to_double(to_exact(p));
 }
 
 }  // namespace tritri

@@ -78,12 +78,20 @@ inline Plane dominant_plane(const std::array<double, 3>& a, const std::array<dou
   return dropping[dominant];
 }
 
-// For points of other kernels (e.g. CGAL points with rational coordinates): their
-// CGAL::to_double approximations when they have them, else XY; projection() checks the
-// choice exactly either way.
+// For points of other kernels (e.g. CGAL points with rational coordinates): the middle of
+// their interval approximations (CGAL's lazy kernels), else their CGAL::to_double
+// approximations when they have them, else XY; projection() checks the choice exactly
+// either way.
 template <class P>
 Plane dominant_plane(const P& a, const P& b, const P& c) {
-  if constexpr (requires { to_double(a.x()); }) {  // found by argument-dependent lookup
+  if constexpr (requires { a.approx()[0].inf(); }) {  // no construction: reads the cached intervals
+    auto approx = [](const P& p) {
+      const auto& i = p.approx();
+      return std::array<double, 3>{0.5 * i[0].inf() + 0.5 * i[0].sup(), 0.5 * i[1].inf() + 0.5 * i[1].sup(),
+                                   0.5 * i[2].inf() + 0.5 * i[2].sup()};
+    };
+    return dominant_plane(approx(a), approx(b), approx(c));
+  } else if constexpr (requires { to_double(a.x()); }) {  // found by argument-dependent lookup
     auto approx = [](const P& p) {
       return std::array<double, 3>{to_double(p.x()), to_double(p.y()), to_double(p.z())};
     };
