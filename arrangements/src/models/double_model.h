@@ -23,6 +23,7 @@
 #include <tritri/projection.h>
 
 #include "arrangements/triangle_soup.h"
+#include "models/point_model.h"
 #include "support/auxiliary_point.h"
 #include "support/side_of_line.h"
 
@@ -127,5 +128,7 @@ struct DoubleModel {
     return Point::tpi(in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8]);
   }
 };
+
+static_assert(PointModel<DoubleModel>);
 
 }  // namespace arrangements

@@ -31,6 +31,7 @@
 #include <tritri/projection.h>
 
 #include "arrangements/triangle_soup.h"
+#include "models/point_model.h"
 
 namespace arrangements {
 
@@ -193,5 +194,7 @@ struct ExactModel {
     return make(h.x / h.w, h.y / h.w, h.z / h.w);
   }
 };
+
+static_assert(PointModel<ExactModel>);
 
 }  // namespace arrangements
