@@ -20,7 +20,7 @@
 #include "support/exact_soups.h"
 #include "support/shared_meshes.h"
 #include "support/temp_dir.h"
-#include "test_scale.h"
+#include "support/test_scale.h"
 
 namespace {
 

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <span>
 #include <string>
@@ -163,7 +164,18 @@ void validate_soup(const TriangleSoup& in) {
         throw std::invalid_argument("arrange: vertex " + std::to_string(v) + " has a non-finite coordinate");
 }
 
-void validate_soup(const ExactTriangleSoup& in) { validate_indices(in); }
+void validate_soup(const ExactTriangleSoup& in) {
+  validate_indices(in);
+  // The box search bounds every point by doubles: coordinates must lie in the double
+  // range (as the file loader, Eigen and Python require too).
+  const CGAL::Gmpq largest(std::numeric_limits<double>::max());
+  for (std::size_t v = 0; v < in.vertices.size(); ++v)
+    for (const CGAL::Gmpq& c : in.vertices[v])
+      if (c > largest || c < -largest)
+        throw std::invalid_argument("arrange: vertex " + std::to_string(v) +
+                                    " has a coordinate beyond the double range (largest magnitude " +
+                                    "1.7976931348623157e308)");
+}
 
 ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options) {
   validate_soup(input);

@@ -60,7 +60,8 @@ ArrangeResult arrange(const TriangleSoup& input, const ArrangeOptions& options);
 ExactArrangeResult arrange(const ExactTriangleSoup& input, const ArrangeOptions& options);
 
 // validate_soup(soup): throws std::invalid_argument, naming the first violation, unless
-// every coordinate is finite (exact soups: always), every index is in range (triangles into vertices, label_set
+// every coordinate is finite (exact soups: at most the largest double in magnitude, so
+// that doubles bound every point), every index is in range (triangles into vertices, label_set
 // into label_sets), and label_set, source and polygon (when not empty) have one entry per
 // triangle. Cost: O(#V + #F).
 void validate_soup(const TriangleSoup& soup);

@@ -18,6 +18,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <span>
@@ -26,6 +27,7 @@
 #include <utility>
 
 #include <tritri/cgal_kernel.h>
+#include <tritri/double_predicates.h>
 #include <tritri/detail/homogeneous.h>
 #include <tritri/point_bounds.h>
 #include <tritri/projection.h>
@@ -35,17 +37,56 @@
 
 namespace arrangements {
 
-// tritri's kernel concept on Epeck points, without constructions: orient3d, equal and
-// less are Epeck's filtered predicates; orient2d evaluates the projected determinant on
-// the points' intervals and, when that cannot decide, on their rationals (CGAL's
-// projection traits would construct lazy 2D points for every call).
+// tritri's kernel concept on Epeck points, without constructions: orient2d and orient3d
+// evaluate their determinant on the points' cached intervals and, when that cannot decide,
+// on their rationals, as integers: each row of differences is scaled by the product of its
+// denominators (positive, so the sign is kept), which avoids the gcd of every rational
+// operation (an exact zero, coplanar or collinear points, is the common case there).
+// equal and less are Epeck's filtered predicates.
 struct EpeckKernel {
   using Point = CGAL::Epeck::Point_3;
+  using Rational = std::decay_t<decltype(std::declval<const Point&>().exact().x())>;
+  static_assert(std::is_same_v<Rational, mpq_class>, "EpeckKernel expects CGAL built with GMPXX");
+
   static tritri::Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
-    return tritri::CgalKernel<CGAL::Epeck>::orient3d(a, b, c, d);
+    {
+      CGAL::Protect_FPU_rounding<true> upward;
+      const auto &A = a.approx(), &B = b.approx(), &C = c.approx(), &D = d.approx();
+      const auto u0 = B[0] - A[0], u1 = B[1] - A[1], u2 = B[2] - A[2];
+      const auto v0 = C[0] - A[0], v1 = C[1] - A[1], v2 = C[2] - A[2];
+      const auto w0 = D[0] - A[0], w1 = D[1] - A[1], w2 = D[2] - A[2];
+      const auto det = u0 * (v1 * w2 - v2 * w1) - u1 * (v0 * w2 - v2 * w0) + u2 * (v0 * w1 - v1 * w0);
+      if (det.inf() > 0) return tritri::Sign::Positive;
+      if (det.sup() < 0) return tritri::Sign::Negative;
+    }
+    const auto &A = a.exact(), &B = b.exact(), &C = c.exact(), &D = d.exact();
+    std::array<double, 3> da, db, dc, dd;
+    if (as_doubles(A, da) && as_doubles(B, db) && as_doubles(C, dc) && as_doubles(D, dd))
+      return tritri::orient3d(da, db, dc, dd);  // input vertices: tritri's exact double predicate
+    // Per-thread integers: their limbs are reused from call to call (no allocation).
+    thread_local Scratch<3> s;
+    integer_row<3>(A, B, {0, 1, 2}, s, 0);
+    integer_row<3>(A, C, {0, 1, 2}, s, 1);
+    integer_row<3>(A, D, {0, 1, 2}, s, 2);
+    const auto& m = s.row;
+    s.t[0] = m[1][1] * m[2][2];
+    s.t[1] = m[1][2] * m[2][1];
+    s.t[0] -= s.t[1];
+    s.det = m[0][0] * s.t[0];
+    s.t[0] = m[1][0] * m[2][2];
+    s.t[1] = m[1][2] * m[2][0];
+    s.t[0] -= s.t[1];
+    s.t[1] = m[0][1] * s.t[0];
+    s.det -= s.t[1];
+    s.t[0] = m[1][0] * m[2][1];
+    s.t[1] = m[1][1] * m[2][0];
+    s.t[0] -= s.t[1];
+    s.t[1] = m[0][2] * s.t[0];
+    s.det += s.t[1];
+    return to_sign(sgn(s.det));
   }
   static tritri::Sign orient2d(const Point& a, const Point& b, const Point& c, tritri::Plane plane) {
-    const int i = plane == tritri::Plane::XY ? 0 : (plane == tritri::Plane::YZ ? 1 : 2), j = (i + 1) % 3;
+    const int i = static_cast<int>(plane), j = (i + 1) % 3;  // XY: (x, y), YZ: (y, z), ZX: (z, x)
     {
       CGAL::Protect_FPU_rounding<true> upward;
       const auto &A = a.approx(), &B = b.approx(), &C = c.approx();
@@ -54,12 +95,75 @@ struct EpeckKernel {
       if (d.sup() < 0) return tritri::Sign::Negative;
     }
     const auto &A = a.exact(), &B = b.exact(), &C = c.exact();
-    using ET = std::decay_t<decltype(A[0])>;  // named: gmpxx expression templates must not outlive their operands
-    const ET d = (B[i] - A[i]) * (C[j] - A[j]) - (B[j] - A[j]) * (C[i] - A[i]);
-    return d > 0 ? tritri::Sign::Positive : (d < 0 ? tritri::Sign::Negative : tritri::Sign::Zero);
+    std::array<double, 3> da, db, dc;
+    if (as_doubles(A, da) && as_doubles(B, db) && as_doubles(C, dc)) return tritri::orient2d(da, db, dc, plane);
+    thread_local Scratch<2> s;
+    integer_row<2>(A, B, {i, j}, s, 0);
+    integer_row<2>(A, C, {i, j}, s, 1);
+    s.det = s.row[0][0] * s.row[1][1];
+    s.t[0] = s.row[0][1] * s.row[1][0];
+    s.det -= s.t[0];
+    return to_sign(sgn(s.det));
   }
   static bool equal(const Point& a, const Point& b) { return a == b; }
   static bool less(const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; }
+
+ private:
+  // Whether every coordinate of p is a double (a dyadic rational with at most 53
+  // significant bits, in range; vertices read from files usually are), and its value.
+  template <class P>
+  static bool as_doubles(const P& p, std::array<double, 3>& out) {
+    for (int k = 0; k < 3; ++k) {
+      const mpz_srcptr num = p[k].get_num_mpz_t(), den = p[k].get_den_mpz_t();
+      const std::size_t den_bits = mpz_sizeinbase(den, 2);
+      if (mpz_scan1(den, 0) != den_bits - 1 || den_bits > 1075) return false;  // not a power of two, or too small
+      const std::size_t num_bits = mpz_sgn(num) == 0 ? 0 : mpz_sizeinbase(num, 2);
+      // Canonical: a numerator over 2^e > 1 is odd, so its bits are all significant; the
+      // highest one, at num_bits - 1 - e, must be at most 1023.
+      if (num_bits > 53 || num_bits > 1023 + den_bits) return false;
+      // Exact: a numerator of at most 53 bits is a double, and so is its value.
+      out[k] = std::ldexp(mpz_get_d(num), -static_cast<int>(den_bits - 1));
+    }
+    return true;
+  }
+  static tritri::Sign to_sign(int s) {
+    return s > 0 ? tritri::Sign::Positive : (s < 0 ? tritri::Sign::Negative : tritri::Sign::Zero);
+  }
+  template <int N>
+  struct Scratch {
+    std::array<std::array<mpz_class, N>, N> row;
+    std::array<mpz_class, N> num, den;
+    mpz_class lcm, det;
+    std::array<mpz_class, 2> t;
+  };
+  // Row r of s: q - p on the given axes, times the least common multiple of its entries'
+  // denominators (positive; equal denominators, the common case, cost no gcd).
+  template <int N, class P>
+  static void integer_row(const P& p, const P& q, std::array<int, N> axes, Scratch<N>& s, int r) {
+    for (int k = 0; k < N; ++k) {
+      const Rational &x = q[axes[k]], &y = p[axes[k]];
+      if (x.get_den() == y.get_den()) {
+        s.num[k] = x.get_num() - y.get_num();
+        s.den[k] = x.get_den();
+      } else {
+        s.num[k] = x.get_num() * y.get_den();
+        s.t[0] = y.get_num() * x.get_den();
+        s.num[k] -= s.t[0];
+        s.den[k] = x.get_den() * y.get_den();
+      }
+    }
+    s.lcm = s.den[0];
+    for (int k = 1; k < N; ++k)
+      if (s.den[k] != s.lcm) mpz_lcm(s.lcm.get_mpz_t(), s.lcm.get_mpz_t(), s.den[k].get_mpz_t());
+    for (int k = 0; k < N; ++k) {
+      if (s.den[k] == s.lcm) {
+        s.row[r][k] = s.num[k];
+      } else {
+        mpz_divexact(s.row[r][k].get_mpz_t(), s.lcm.get_mpz_t(), s.den[k].get_mpz_t());
+        s.row[r][k] *= s.num[k];
+      }
+    }
+  }
 };
 
 struct ExactModel {
