@@ -102,7 +102,7 @@ ArrangeOptions one_thread() {
 // point -> 4 triangles and 8 edges; they share the segment: V = 8, E = 15, F = 8.
 TEST(ArrangeEigenExact, ThirdsCrossingByHand) {
   const Q third(1, 3);
-  const std::vector<ExactVec3> V = {{Q(0), Q(0), Q(0)},        {Q(1), Q(0), Q(0)},       {Q(0), Q(1), Q(0)},
+  const std::vector<ExactVec3> V = {{Q(0), Q(0), Q(0)},    {Q(1), Q(0), Q(0)},   {Q(0), Q(1), Q(0)},
                                     {third, third, Q(-1)}, {third, third, Q(1)}, {third, Q(-1), third}};
   const std::vector<Tri> F = {{0, 1, 2}, {3, 4, 5}};
   Eigen::VectorXi labels(2);

@@ -247,8 +247,7 @@ inline EigenArrangement arrange(const Eigen::MatrixXd& V, const Eigen::MatrixXi&
 
 // Exact input, exact output (see the top of this file): any matrix expression of
 // CGAL::Gmpq for V (constrained, so that double expressions still pick the overload above).
-template <class DV>
-  requires std::is_same_v<typename DV::Scalar, CGAL::Gmpq>
+template <class DV, class = std::enable_if_t<std::is_same_v<typename DV::Scalar, CGAL::Gmpq>>>
 ExactEigenArrangement arrange(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixXi& F, const ArrangeOptions& options,
                               const Eigen::VectorXi* labels = nullptr) {
   return detail::arrange_eigen_exact(V, F, options, labels, "arrangements::arrange");
