@@ -1,12 +1,17 @@
 // tritri._tritri: the Python extension behind the `tritri` package (python/tritri/__init__.py,
-// which normalises the arguments to C-contiguous float64 / int64 numpy arrays and documents
-// the functions). Every C++ computation runs with the GIL released; every refused input
-// raises ValueError (std::invalid_argument, std::domain_error and arrangements::InputError
-// are translated), so bad input never takes the interpreter down.
+// which normalises the arguments to C-contiguous float64 / int64 numpy arrays, or exact
+// coordinates to hexadecimal "n/d" strings, and documents the functions). Every C++
+// computation runs with the GIL released; every refused input raises ValueError
+// (std::invalid_argument, std::domain_error and arrangements::InputError are translated), so
+// bad input never takes the interpreter down. Exact coordinates come back as
+// fractions.Fraction objects (flat lists, 3 per vertex; the package shapes them).
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
+
+#include <CGAL/Gmpq.h>
 
 #include <Eigen/Core>
 
@@ -28,6 +33,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace nb = nanobind;
@@ -39,6 +45,8 @@ using Indices = nb::ndarray<const std::int64_t, nb::ndim<2>, nb::c_contig, nb::d
 using Labels = nb::ndarray<const std::int64_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 using RowMajorXd = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 using RowMajorXl = Eigen::Matrix<std::int64_t, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using LabelVector = Eigen::Map<const Eigen::Matrix<std::int64_t, Eigen::Dynamic, 1>>;
+using arrangements::ExactVec3;
 
 Eigen::Map<const RowMajorXd> as_eigen(const Coords& a) {
   return {a.data(), static_cast<Eigen::Index>(a.shape(0)), static_cast<Eigen::Index>(a.shape(1))};
@@ -121,32 +129,62 @@ nb::dict stats_dict(const arrangements::ArrangeStats& s) {
   return d;
 }
 
-nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels, const std::string& classifier,
-                 int threads) {
+// --- exact coordinates: hexadecimal "n/d" strings in, fractions.Fraction out ------------
+
+// The rational written "n/d" in base 16 (n with an optional '-'; d > 0), as the package
+// writes it (base 16: linear-time conversions both ways, and no limit on the digits).
+CGAL::Gmpq parse_hex_rational(const std::string& text, std::size_t index) {
+  CGAL::Gmpq q;
+  const bool ok = text.find('/') != std::string::npos && mpq_set_str(q.mpq(), text.c_str(), 16) == 0 &&
+                  mpz_sgn(mpq_denref(q.mpq())) > 0;
+  if (!ok)
+    throw std::invalid_argument("tritri.arrange: V[" + std::to_string(index / 3) + ", " + std::to_string(index % 3) +
+                                "] is not a rational written \"n/d\" in base 16");
+  mpq_canonicalize(q.mpq());
+  return q;
+}
+
+nb::object python_int(mpz_srcptr z) {
+  std::string digits(mpz_sizeinbase(z, 16) + 2, '\0');
+  mpz_get_str(digits.data(), 16, z);
+  PyObject* n = PyLong_FromString(digits.c_str(), nullptr, 16);
+  if (!n) throw nb::python_error();
+  return nb::steal(n);
+}
+
+// Every coordinate of `rows` as a fractions.Fraction, row after row (3 per row).
+nb::list fractions_of(const std::vector<ExactVec3>& rows) {
+  const nb::object Fraction = nb::module_::import_("fractions").attr("Fraction");
+  nb::list out;
+  for (const ExactVec3& row : rows)
+    for (const CGAL::Gmpq& x : row)
+      out.append(Fraction(python_int(mpq_numref(x.mpq())), python_int(mpq_denref(x.mpq()))));
+  return out;
+}
+
+// --- arrange ----------------------------------------------------------------------------
+
+arrangements::ArrangeOptions arrange_options(const std::string& classifier, int threads) {
   if (!arrangements::valid_thread_count(threads))
     throw std::invalid_argument("tritri.arrange: threads must be an integer from 0 to " +
                                 std::to_string(arrangements::kMaxThreads) + ", got " + std::to_string(threads));
   arrangements::ArrangeOptions options;
   options.classifier = classifier_named(classifier);
   options.threads = threads;
-  arrangements::EigenArrangement out;
-  {
-    nb::gil_scoped_release release;
-    // Checked once, by the Eigen entry point (int64 indices and labels are range-checked
-    // there before they are narrowed).
-    using LabelVector = Eigen::Map<const Eigen::Matrix<std::int64_t, Eigen::Dynamic, 1>>;
-    std::optional<LabelVector> Le;
-    if (labels) Le.emplace(labels->data(), static_cast<Eigen::Index>(labels->shape(0)));
-    out = arrangements::detail::arrange_eigen(as_eigen(V), as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange");
-  }
+  return options;
+}
 
-  const auto nv = static_cast<std::size_t>(out.V.rows()), nf = static_cast<std::size_t>(out.F.rows());
-  std::vector<double> v(3 * nv);
-  std::vector<std::uint8_t> exact(nv);
-  for (std::size_t i = 0; i < nv; ++i) {
-    for (int c = 0; c < 3; ++c) v[3 * i + c] = out.V(i, c);
-    exact[i] = out.V_is_exact(i) ? 1 : 0;
-  }
+std::optional<LabelVector> label_vector(const std::optional<Labels>& labels) {
+  std::optional<LabelVector> Le;
+  if (labels) Le.emplace(labels->data(), static_cast<Eigen::Index>(labels->shape(0)));
+  return Le;
+}
+
+// The result dict: V (rounded, #V x 3) and V_is_exact from `rounded` / `exact_flags`, the
+// faces' fields and stats from `out` (EigenArrangement or ExactEigenArrangement).
+template <class Out>
+nb::dict arrangement_dict(std::vector<double>&& rounded, std::vector<std::uint8_t>&& exact_flags, const Out& out) {
+  const std::size_t nv = exact_flags.size(), nf = static_cast<std::size_t>(out.F.rows());
   std::vector<std::int64_t> f(3 * nf), source(nf), label_set(nf);
   for (std::size_t i = 0; i < nf; ++i) {
     for (int c = 0; c < 3; ++c) f[3 * i + c] = out.F(i, c);
@@ -160,35 +198,110 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
     label_sets.append(nb::tuple(labels));
   }
   nb::dict d;
-  d["V"] = numpy_array(std::move(v), {nv, 3});
+  d["V"] = numpy_array(std::move(rounded), {nv, 3});
   d["F"] = numpy_array(std::move(f), {nf, 3});
   d["source"] = numpy_array(std::move(source), {nf});
   d["label_set"] = numpy_array(std::move(label_set), {nf});
   d["label_sets"] = label_sets;
-  d["V_is_exact"] = numpy_array(std::move(exact), {nv}).attr("astype")("bool");
+  d["V_is_exact"] = numpy_array(std::move(exact_flags), {nv}).attr("astype")("bool");
   d["stats"] = stats_dict(out.stats);
   return d;
 }
 
-// A mesh file as plain arrays (the pipeline's loader: OBJ, OFF, STL, PLY; polygons
-// triangulated by the loader; vertices unmerged). Bad files raise ValueError (InputError).
+// The double path; exact_output adds V_exact (the exact output vertices as Fractions).
+nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels, const std::string& classifier,
+                 int threads, bool exact_output) {
+  const arrangements::ArrangeOptions options = arrange_options(classifier, threads);
+  arrangements::EigenArrangement out;
+  std::vector<ExactVec3> exact;
+  {
+    nb::gil_scoped_release release;
+    // Checked once, by the Eigen entry point (int64 indices and labels are range-checked
+    // there before they are narrowed).
+    const std::optional<LabelVector> Le = label_vector(labels);
+    out = arrangements::detail::arrange_eigen(as_eigen(V), as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange",
+                                              exact_output ? &exact : nullptr);
+  }
+  const auto nv = static_cast<std::size_t>(out.V.rows());
+  std::vector<double> v(3 * nv);
+  std::vector<std::uint8_t> flags(nv);
+  for (std::size_t i = 0; i < nv; ++i) {
+    for (int c = 0; c < 3; ++c) v[3 * i + c] = out.V(i, c);
+    flags[i] = out.V_is_exact(i) ? 1 : 0;
+  }
+  nb::dict d = arrangement_dict(std::move(v), std::move(flags), out);
+  if (exact_output) d["V_exact"] = fractions_of(exact);
+  return d;
+}
+
+// The exact path: V as 3 #V hexadecimal "n/d" strings, row after row. The dict of arrange
+// plus V_exact; V is V_exact rounded to the nearest double (ties to even).
+nb::dict arrange_exact(const std::vector<std::string>& V, const Indices& F, std::optional<Labels> labels,
+                       const std::string& classifier, int threads) {
+  const arrangements::ArrangeOptions options = arrange_options(classifier, threads);
+  if (V.size() % 3 != 0)
+    throw std::invalid_argument("tritri.arrange: V must hold 3 coordinates per vertex, got " +
+                                std::to_string(V.size()));
+  arrangements::ExactEigenArrangement out;
+  std::vector<ExactVec3> exact;
+  std::vector<double> rounded;
+  std::vector<std::uint8_t> flags;
+  {
+    nb::gil_scoped_release release;
+    Eigen::Matrix<CGAL::Gmpq, Eigen::Dynamic, 3> Ve(static_cast<Eigen::Index>(V.size() / 3), 3);
+    for (std::size_t i = 0; i < V.size(); ++i)
+      Ve(static_cast<Eigen::Index>(i / 3), static_cast<Eigen::Index>(i % 3)) = parse_hex_rational(V[i], i);
+    const std::optional<LabelVector> Le = label_vector(labels);
+    out = arrangements::detail::arrange_eigen_exact(Ve, as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange");
+    const auto nv = static_cast<std::size_t>(out.V.rows());
+    exact.resize(nv);
+    rounded.resize(3 * nv);
+    flags.resize(nv);
+    tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t i) {
+      const auto r = static_cast<Eigen::Index>(i);
+      exact[i] = {out.V(r, 0), out.V(r, 1), out.V(r, 2)};
+      const std::array<double, 3> x = tritri::to_double(exact[i]);
+      bool is_exact = true;
+      for (int c = 0; c < 3; ++c) {
+        rounded[3 * i + c] = x[c];
+        is_exact = is_exact && CGAL::Gmpq(x[c]) == exact[i][c];  // finite: |x| <= DBL_MAX
+      }
+      flags[i] = is_exact ? 1 : 0;
+    });
+  }
+  nb::dict d = arrangement_dict(std::move(rounded), std::move(flags), out);
+  d["V_exact"] = fractions_of(exact);
+  return d;
+}
+
+// A mesh file as plain arrays (the pipeline's loader load_mesh_files: OBJ, OFF, STL, PLY;
+// polygons triangulated by the loader; vertices unmerged): V (float64) when every
+// coordinate is a double, else V_exact (Fractions, 3 per vertex); F. Bad files raise
+// ValueError (InputError).
 nb::dict load_mesh(const std::string& path) {
   if (path.find('\0') != std::string::npos)  // the loader would open the path up to it
     throw std::invalid_argument("tritri.load_mesh: the path contains a NUL character");
-  arrangements::TriangleSoup soup;
+  arrangements::AnyTriangleSoup any;
   {
     nb::gil_scoped_release release;
-    soup = arrangements::load_triangle_soup(path);
+    any = arrangements::load_mesh_files({path});
   }
-  const std::size_t nv = soup.vertices.size(), nf = soup.triangles.size();
-  std::vector<double> v(3 * nv);
-  std::vector<std::int64_t> f(3 * nf);
-  for (std::size_t i = 0; i < nv; ++i)
-    for (int c = 0; c < 3; ++c) v[3 * i + c] = soup.vertices[i][c];
-  for (std::size_t i = 0; i < nf; ++i)
-    for (int c = 0; c < 3; ++c) f[3 * i + c] = soup.triangles[i][c];
   nb::dict d;
-  d["V"] = numpy_array(std::move(v), {nv, 3});
+  const std::vector<arrangements::Tri>& triangles =
+      std::visit([](const auto& soup) -> const std::vector<arrangements::Tri>& { return soup.triangles; }, any);
+  if (const auto* soup = std::get_if<arrangements::TriangleSoup>(&any)) {
+    const std::size_t nv = soup->vertices.size();
+    std::vector<double> v(3 * nv);
+    for (std::size_t i = 0; i < nv; ++i)
+      for (int c = 0; c < 3; ++c) v[3 * i + c] = soup->vertices[i][c];
+    d["V"] = numpy_array(std::move(v), {nv, 3});
+  } else {
+    d["V_exact"] = fractions_of(std::get<arrangements::ExactTriangleSoup>(any).vertices);
+  }
+  const std::size_t nf = triangles.size();
+  std::vector<std::int64_t> f(3 * nf);
+  for (std::size_t i = 0; i < nf; ++i)
+    for (int c = 0; c < 3; ++c) f[3 * i + c] = triangles[i][c];
   d["F"] = numpy_array(std::move(f), {nf, 3});
   return d;
 }
@@ -244,5 +357,7 @@ NB_MODULE(_tritri, m) {
   // The stats keys with their meanings, as text (for the docstring of tritri.arrange).
   m.def("_stats_key_list", &arrangements::stats_key_list, nb::arg("indent"), nb::arg("column"), nb::arg("width"));
   m.def("arrange", &arrange, nb::arg("V"), nb::arg("F"), nb::arg("labels").none(), nb::arg("classifier"),
+        nb::arg("threads"), nb::arg("exact_output") = false);
+  m.def("arrange_exact", &arrange_exact, nb::arg("V"), nb::arg("F"), nb::arg("labels").none(), nb::arg("classifier"),
         nb::arg("threads"));
 }

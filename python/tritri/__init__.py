@@ -7,24 +7,41 @@
     r.points    # [('EA_CROSS_TB', 0, -1), ('EB_CROSS_TA', 0, -1)]
     r.segments  # [(0, 1)]
 
-Functions (every decision is an exact predicate on the input doubles, no tolerances):
+Functions (every decision is an exact predicate on the input coordinates, no tolerances):
     classify(a, b)                     -> Result
     self_intersections(V, F)           -> (pairs, results)
     intersections(V1, F1, V2, F2)      -> (pairs, results)
-    arrange(V, F, labels=None, classifier="tritri", threads=0) -> dict
-    load_mesh(path)                    -> dict (V, F)
+    arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None) -> dict
+    load_mesh(path, exact=False)       -> dict (V, F)
 
 Arguments are anything numpy.asarray accepts: V as n x 3 real coordinates (any integer or
-floating dtype, or Python numbers; converted to float64), F as m x 3 integer vertex indices
-(any integer dtype). Non-contiguous and Fortran-ordered arrays are fine (copied).
+floating dtype, or Python numbers; converted to float64, except by arrange: below), F as
+m x 3 integer vertex indices (any integer dtype). Non-contiguous and Fortran-ordered arrays are fine (copied).
+
+Exact coordinates (exact in, exact out): an exact coordinate is a fractions.Fraction, and
+exact vertices are an n x 3 numpy array of dtype object holding Fractions. Fractions are
+what Python researchers reach for: the standard library's exact rationals, unlimited in
+size (arrangement points have numerators and denominators of hundreds of bits, far beyond
+int64 pairs), with exact arithmetic and comparisons that work elementwise on object arrays,
+and accepted as they are by sympy, gmpy2 and the statistics module. Vertices in that form:
+  - load_mesh(path) returns them as V when the file has rational coordinates that are not
+    doubles (as `arrange --exact` writes them, "n/d"); load_mesh(path, exact=True) always;
+  - arrange(V, F) takes them: V may hold Fractions, ints and floats in any mix (each
+    converted exactly); when some value is not exactly a float64 the exact pipeline runs
+    (every point a rational), else the usual double pipeline. The result's "V_exact" holds
+    the exact output vertices, for exact input or with exact_output=True.
+  - classify, self_intersections and intersections work on float64 (values converted by
+    float(), as before).
 
 Errors: every refused argument raises ValueError with a message naming the argument and
 the entry: wrong shape, NaN or infinite coordinates, a number beyond the float64 range
-(e.g. 10**400), an index or label out of range, an unknown classifier, threads outside
-0..MAX_THREADS, a mesh the pipeline cannot arrange, an unreadable mesh file. An argument
-of the wrong type (threads that is not an integer, a classifier that is not a str, a path
-that is not str / bytes / os.PathLike, arrays of bool, complex, str or other objects, F or
-labels that are not integers) raises ArgumentTypeError, which is both a TypeError (Python's
+(e.g. 10**400, or Fraction(10**400, 3): exact coordinates obey the same rule, as the file
+loader's rationals do), an index or label out of range, an unknown classifier, threads
+outside 0..MAX_THREADS, a mesh the pipeline cannot arrange, an unreadable mesh file. An
+argument of the wrong type (threads that is not an integer, a classifier that is not a str,
+a path that is not str / bytes / os.PathLike, arrays of bool, complex, str or other
+objects, F or labels that are not integers, exact_output that is not None or a bool, exact
+that is not a bool) raises ArgumentTypeError, which is both a TypeError (Python's
 convention) and a ValueError (so `except ValueError` catches every refused input).
 OverflowError and MemoryError are never raised for argument values; only a mesh too large
 for the machine's memory can raise MemoryError. The C++ work runs without the GIL.
@@ -36,11 +53,14 @@ tools' --threads (arrangements/thread_count.h explains why there is a cap).
 import numbers as _numbers
 import operator as _operator
 import os as _os
+import sys as _sys
+from fractions import Fraction as _Fraction
 
 import numpy as _np
 
 from ._tritri import MAX_THREADS, Result
 from ._tritri import arrange as _arrange
+from ._tritri import arrange_exact as _arrange_exact
 from ._tritri import classify as _classify
 from ._tritri import intersections as _intersections
 from ._tritri import load_mesh as _load_mesh
@@ -141,6 +161,68 @@ def _faces(x, name, function):
     return _np.ascontiguousarray(a)
 
 
+_DBL_MAX = _Fraction(_sys.float_info.max)
+
+
+def _exact_coordinate(v, where):
+    """v as a Fraction, exactly (ints, Fractions, any Rational; floats of any width by
+    as_integer_ratio; another Real type by its float()). `where` names the entry."""
+    if isinstance(v, (bool, _np.bool_)) or not isinstance(v, _numbers.Real):
+        raise ArgumentTypeError(f"{where} is {_describe(v)}, not a real number")
+    try:
+        if isinstance(v, _numbers.Integral):
+            q = _Fraction(_operator.index(v))
+        elif isinstance(v, _numbers.Rational):
+            q = _Fraction(int(v.numerator), int(v.denominator))
+        elif hasattr(v, "as_integer_ratio"):  # float, numpy floating of any width
+            q = _Fraction(*v.as_integer_ratio())
+        else:
+            q = _Fraction(float(v))
+    except (OverflowError, ValueError):  # NaN, infinity
+        raise ValueError(f"{where} = {_describe(v)} is not a finite number") from None
+    except TypeError:
+        raise ArgumentTypeError(f"{where} is {_describe(v)}, not a real number") from None
+    if abs(q) > _DBL_MAX:
+        raise ValueError(f"{where} = {_describe(v)} is beyond the float64 range")
+    return q
+
+
+def _is_double(q):
+    """The Fraction q (|q| <= DBL_MAX) is exactly a float64."""
+    d = q.denominator
+    return (d & (d - 1)) == 0 and float(q) == q  # float(q) is correctly rounded
+
+
+def _arrange_vertices(x):
+    """V for arrange: (float64 n x 3 array, exact input?) when every value is exactly a
+    float64, else (list of 3n hexadecimal "n/d" strings, True). Exact input: some value is
+    a non-integer Rational (e.g. a Fraction) or not exactly a float64."""
+    a = _as_array(x, "V", "arrange", "numbers")
+    if (a.dtype.kind in "iu" and a.dtype.itemsize == 8 and a.size
+            and ((a > 2**53).any() or (a < -2**53).any())) or (a.dtype.kind == "f" and a.dtype.itemsize > 8):
+        a = a.astype(object)  # int64 beyond 2**53, long double: maybe not doubles, so exactly
+    if a.dtype.kind != "O":
+        return _vertices(a, "V", "arrange"), False
+    values, all_double, fraction = [], True, False
+    for index, v in _np.ndenumerate(a):
+        q = _exact_coordinate(v, f"tritri.arrange: V{list(index) if index else ''}")
+        all_double = all_double and _is_double(q)
+        fraction = fraction or (isinstance(v, _numbers.Rational) and not isinstance(v, _numbers.Integral))
+        values.append(q)
+    if a.size and (a.ndim != 2 or a.shape[1] != 3):
+        raise ValueError(f"tritri.arrange: V must be an n x 3 array of vertex coordinates, got shape {a.shape}")
+    if all_double:
+        return _vertices(a, "V", "arrange"), fraction  # as before: float(v) of each value
+    return [f"{q.numerator:x}/{q.denominator:x}" for q in values], True
+
+
+def _fraction_rows(flat):
+    """A flat list of 3n Fractions as an n x 3 object array."""
+    a = _np.empty(len(flat), dtype=object)
+    a[:] = flat
+    return a.reshape(-1, 3)
+
+
 def _thread_count(threads):
     try:
         if isinstance(threads, (bool, _np.bool_)):
@@ -207,16 +289,28 @@ def intersections(V1, F1, V2, F2):
                           _vertices(V2, "V2", f), _faces(F2, "F2", f))
 
 
-def arrange(V, F, labels=None, classifier="tritri", threads=0):
+def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None):
     """The mesh arrangement: cuts the triangles along all their intersections, exactly.
 
-    V: n x 3 coordinates; F: m x 3 vertex indices (m >= 1); labels: None (all 0) or m
+    V: n x 3 coordinates, float64 or exact (Python ints, fractions.Fraction, floats, in
+    any mix; an object array of Fractions as load_mesh returns; see the module's
+    documentation); F: m x 3 vertex indices (m >= 1); labels: None (all 0) or m
     integer labels from 0 to 2**31 - 1 (e.g. which input mesh a triangle came from);
     classifier: "tritri" or "native"; threads: worker threads, an integer from 0 (all
-    cores, the default) to MAX_THREADS (1024), as `arrange --threads`.
+    cores, the default) to MAX_THREADS (1024), as `arrange --threads`; exact_output: True
+    adds V_exact, False leaves it out, None (default) adds it when V is exact input (holds
+    a Fraction or a value that is not exactly a float64).
+    Every value of V is converted exactly. When all of them are float64 values, the double
+    pipeline runs (new points implicit; with float64 input exactly what earlier versions
+    returned); when some value is not, the exact pipeline runs (every point a rational,
+    as `arrange` on a file with rational coordinates). Both give the same arrangement of
+    the same input, up to the numbering of vertices and the triangulation.
     Returns a dict:
       V           #V x 3 float64: output vertices rounded to the nearest double
-      V_is_exact  #V bool: the rounded vertex is the exact one (input vertices always)
+      V_is_exact  #V bool: the rounded vertex is the exact one (input vertices that are
+                  float64 values always)
+      V_exact     (only with exact output, above) #V x 3 object array of
+                  fractions.Fraction: the output vertices exactly, rows as in V
       F           #F x 3 int64 triangles, oriented like the input triangle they lie in;
                   they meet only at shared vertices and edges (exactly; the rounded V can
                   differ where V_is_exact is False)
@@ -230,11 +324,16 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0):
 {stats_keys}
     Raises ValueError for refused input (see the module's documentation): a threads value
     outside 0..MAX_THREADS, an unknown classifier, an index or label out of range, NaN or
-    infinite coordinates, nothing left to arrange; ArgumentTypeError (also a ValueError)
+    infinite coordinates, a coordinate beyond the float64 range (also exact ones: |x| >
+    the largest float64), nothing left to arrange; ArgumentTypeError (also a ValueError)
     for threads that is not an integer (bool, float, str, None), a classifier that is not
-    a str, or arrays of the wrong dtype.
+    a str, exact_output that is not None or a bool, arrays of the wrong dtype, or V
+    entries that are not real numbers.
     """
     f = "arrange"
+    if exact_output is not None and not isinstance(exact_output, (bool, _np.bool_)):
+        raise ArgumentTypeError(f"tritri.arrange: exact_output must be None, True or False, "
+                                f"got {_describe(exact_output)}")
     if not isinstance(classifier, str):
         raise ArgumentTypeError(f"tritri.arrange: classifier must be 'tritri' or 'native', "
                                 f"got {_describe(classifier)}")
@@ -252,7 +351,17 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0):
             raise ValueError(f"tritri.arrange: labels must have one entry per row of F ({Fa.shape[0]}), "
                              f"got {la.shape[0]}")
         la = _np.ascontiguousarray(la)
-    return _arrange(_vertices(V, "V", f), Fa, la, classifier, threads)
+    Va, exact_input = _arrange_vertices(V)
+    want_exact = exact_input if exact_output is None else bool(exact_output)
+    if isinstance(Va, list):
+        out = _arrange_exact(Va, Fa, la, classifier, threads)
+    else:
+        out = _arrange(Va, Fa, la, classifier, threads, want_exact)
+    if "V_exact" in out:
+        exact = out.pop("V_exact")
+        if want_exact:
+            out["V_exact"] = _fraction_rows(exact)
+    return out
 
 
 if arrange.__doc__:  # None under python -OO
@@ -262,21 +371,37 @@ if arrange.__doc__:  # None under python -OO
     arrange.__doc__ = arrange.__doc__.replace("{stats_keys}", _stats_key_list(18, 39, 94).rstrip("\n"))
 
 
-def load_mesh(path):
+def load_mesh(path, exact=False):
     """Reads a mesh file with the pipeline's loader (the same one `arrange` uses).
 
     path: an .obj, .off, .stl or .ply file (ASCII or binary). Polygons are triangulated as
     by the loader (in their plane when simple, else the fan from the first corner);
-    vertices are not merged (arrange merges them exactly).
-    Returns a dict with V (n x 3 float64) and F (m x 3 int64). A missing, unreadable or
-    malformed file, NaN/Inf coordinates or out-of-range indices raise ValueError; a path
-    that is not str, bytes or os.PathLike raises ArgumentTypeError.
+    vertices are not merged (arrange merges them exactly). OBJ and OFF coordinates may be
+    rationals "n/d" (as `arrange --exact` writes them), read exactly.
+    exact: False (default) or True.
+    Returns a dict with V and F (m x 3 int64). V is n x 3 float64 when every coordinate is
+    a float64 and exact is False; otherwise an n x 3 object array of fractions.Fraction,
+    every coordinate exactly (decimals as their correctly rounded float64, rationals as
+    written). Either V goes to arrange as it is (exact V runs the exact pipeline).
+    A missing, unreadable or malformed file, NaN/Inf coordinates, rationals beyond the
+    float64 range or with a zero denominator, or out-of-range indices raise ValueError; a
+    path that is not str, bytes or os.PathLike, or exact that is not a bool, raises
+    ArgumentTypeError.
     """
     try:
         path = _os.fsdecode(path)  # str, bytes or os.PathLike
     except TypeError:
         raise ArgumentTypeError(f"tritri.load_mesh: path must be a str, bytes or os.PathLike, "
                                 f"got {_describe(path)}") from None
+    if not isinstance(exact, (bool, _np.bool_)):
+        raise ArgumentTypeError(f"tritri.load_mesh: exact must be True or False, got {_describe(exact)}")
     if "\0" in path:
         raise ValueError("tritri.load_mesh: the path contains a NUL character")
-    return _load_mesh(path)
+    out = _load_mesh(path)
+    if "V_exact" in out:
+        V = _fraction_rows(out["V_exact"])
+    elif exact:
+        V = _fraction_rows([_Fraction(x) for x in out["V"].ravel().tolist()])
+    else:
+        V = out["V"]
+    return {"V": V, "F": out["F"]}

@@ -43,14 +43,30 @@
 // tells which vertices moved). Deterministic for any number of threads.
 // Complexity: that of arrange.h (candidate pairs, classification, triangulation), plus
 // O(#V + #F) for the conversions; the rounding of new points is parallel (oneTBB).
+//
+// Exact input and output: arrange(V, F, options, labels) with V an Eigen matrix of
+// CGAL::Gmpq (any #V by 3 expression, e.g. Eigen::Matrix<CGAL::Gmpq, Eigen::Dynamic, 3>;
+// CGAL/Gmpq.h gives Eigen its NumTraits) runs the exact path (arrange(ExactTriangleSoup),
+// every point a rational) and returns ExactEigenArrangement:
+//   V                #V_out by 3 CGAL::Gmpq: the output vertices, exactly (input vertices
+//                    as given, new points as rationals; first-use order like `vertices`)
+//   F, source, label_set, label_sets, stats   as in EigenArrangement
+// Input checks as above, plus: a coordinate beyond the largest finite double in absolute
+// value is refused (std::invalid_argument), the rule of load_mesh_files for rational file
+// coordinates (the pipeline needs finite bounding boxes). Use it for rational input (e.g.
+// an exact arrangement arranged again); double input is faster on the double overload, and
+// tritri::to_exact of its `vertices` gives the same rationals (the same point set, possibly
+// numbered and triangulated differently).
 #pragma once
 
+#include <CGAL/Gmpq.h>  // before Eigen is used with it: Eigen::NumTraits<CGAL::Gmpq>
 #include <Eigen/Core>
 #include <tbb/parallel_for.h>
 
 #include <tritri/implicit_point.h>
 
 #include <array>
+#include <cfloat>
 #include <climits>
 #include <cmath>
 #include <cstdint>
@@ -79,18 +95,22 @@ struct EigenArrangement {
   ArrangeStats stats;
 };
 
+struct ExactEigenArrangement {
+  Eigen::Matrix<CGAL::Gmpq, Eigen::Dynamic, 3> V;
+  Eigen::MatrixXi F;
+  Eigen::VectorXi source;
+  Eigen::VectorXi label_set;
+  std::vector<LabelSet> label_sets;
+  ArrangeStats stats;
+};
+
 namespace detail {
 
-// The input as a TriangleSoup: the one place where the Eigen and Python entry points check
-// it (coordinates and indices by tritri's checks, shared with the batch API; labels
-// here); source = row of F. `where` names the function in messages.
-template <class DV, class DF, class DL>
-TriangleSoup eigen_soup(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<DF>& F,
-                        const Eigen::MatrixBase<DL>* labels, const std::string& where) {
+// label_set, label_sets and source of `soup` (its triangles already set) from labels
+// (nullptr: all 0), checked; source = row of F. `where` names the function in messages.
+template <class Soup, class DL>
+void set_eigen_labels(Soup& soup, const Eigen::MatrixBase<DL>* labels, const std::string& where) {
   static_assert(std::is_integral_v<typename DL::Scalar>, "labels must hold integers");
-  TriangleSoup soup;
-  soup.vertices = tritri::detail::checked_vertices(V, where + ": V");
-  soup.triangles = tritri::detail::checked_triangles(F, soup.vertices.size(), where + ": F");
   const std::size_t nf = soup.triangles.size();
   if (labels && static_cast<std::size_t>(labels->size()) != nf)
     throw std::invalid_argument(where + ": labels must have one entry per row of F (" + std::to_string(nf) + "), got " +
@@ -108,34 +128,54 @@ TriangleSoup eigen_soup(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<
     soup.label_set[r] = it->second;
     soup.source[r] = static_cast<std::int64_t>(r);
   }
+}
+
+// The input as a TriangleSoup: the one place where the Eigen and Python entry points check
+// it (coordinates and indices by tritri's checks, shared with the batch API; labels
+// here); source = row of F. `where` names the function in messages.
+template <class DV, class DF, class DL>
+TriangleSoup eigen_soup(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<DF>& F,
+                        const Eigen::MatrixBase<DL>* labels, const std::string& where) {
+  TriangleSoup soup;
+  soup.vertices = tritri::detail::checked_vertices(V, where + ": V");
+  soup.triangles = tritri::detail::checked_triangles(F, soup.vertices.size(), where + ": F");
+  set_eigen_labels(soup, labels, where);
   return soup;
 }
 
-// arrange() below for any Eigen matrix types (the Python module passes int64 indices and
-// labels: they are range-checked before they are narrowed).
+// The same for rational V (the exact entry points): 3 columns, at most INT_MAX rows, every
+// |coordinate| <= DBL_MAX (the rule of load_mesh_files).
 template <class DV, class DF, class DL>
-EigenArrangement arrange_eigen(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<DF>& F,
-                               const ArrangeOptions& options, const Eigen::MatrixBase<DL>* labels,
-                               const std::string& where) {
-  ArrangeResult result = arrange_validated(eigen_soup(V, F, labels, where), options);
-  OutputMesh& mesh = result.mesh;
+ExactTriangleSoup exact_eigen_soup(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<DF>& F,
+                                   const Eigen::MatrixBase<DL>* labels, const std::string& where) {
+  static_assert(std::is_same_v<typename DV::Scalar, CGAL::Gmpq>, "V must hold CGAL::Gmpq coordinates");
+  ExactTriangleSoup soup;
+  if (V.size() != 0) {
+    if (V.cols() != 3)
+      throw std::invalid_argument(where + ": V must have 3 columns (x, y, z), got " + std::to_string(V.cols()));
+    if (V.rows() > INT_MAX)  // triangles index vertices with int
+      throw std::invalid_argument(where + ": V has more than " + std::to_string(INT_MAX) + " rows");
+    const CGAL::Gmpq largest(DBL_MAX);  // exactly: a double is a rational
+    soup.vertices.resize(static_cast<std::size_t>(V.rows()));
+    for (Eigen::Index r = 0; r < V.rows(); ++r)
+      for (Eigen::Index c = 0; c < 3; ++c) {
+        const CGAL::Gmpq& x = V(r, c);
+        if (x > largest || x < -largest)
+          throw std::invalid_argument(where + ": V(" + std::to_string(r) + ", " + std::to_string(c) +
+                                      ") is beyond the largest finite double (the pipeline needs finite "
+                                      "bounding boxes)");
+        soup.vertices[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = x;
+      }
+  }
+  soup.triangles = tritri::detail::checked_triangles(F, soup.vertices.size(), where + ": F");
+  set_eigen_labels(soup, labels, where);
+  return soup;
+}
 
-  EigenArrangement out;
-  const auto nv = static_cast<Eigen::Index>(mesh.vertices.size());
+// F, source, label_set, label_sets and stats of `out` from an arrangement's mesh and stats.
+template <class Out, class Mesh>
+void set_eigen_faces(Out& out, Mesh& mesh, ArrangeStats& stats) {
   const auto nf = static_cast<Eigen::Index>(mesh.triangles.size());
-  out.V.resize(nv, 3);
-  out.V_is_exact.resize(nv);
-  tbb::parallel_for(Eigen::Index{0}, nv, [&](Eigen::Index v) {
-    const tritri::ImplicitPoint& p = mesh.vertices[v];
-    const std::array<double, 3> x = tritri::to_double(p);
-    bool exact = true;
-    if (!p.is_explicit()) {
-      const std::array<CGAL::Gmpq, 3> q = tritri::to_exact(p);
-      for (int c = 0; c < 3; ++c) exact = exact && std::isfinite(x[c]) && CGAL::Gmpq(x[c]) == q[c];
-    }
-    for (int c = 0; c < 3; ++c) out.V(v, c) = x[c];
-    out.V_is_exact(v) = exact;
-  });
   out.F.resize(nf, 3);
   out.source.resize(nf);
   out.label_set.resize(nf);
@@ -144,9 +184,57 @@ EigenArrangement arrange_eigen(const Eigen::MatrixBase<DV>& V, const Eigen::Matr
     out.source(f) = static_cast<int>(mesh.source[f]);
     out.label_set(f) = mesh.label_set[f];
   }
-  out.vertices = std::move(mesh.vertices);
   out.label_sets = std::move(mesh.label_sets);
-  out.stats = std::move(result.stats);
+  out.stats = std::move(stats);
+}
+
+// arrange() below for any Eigen matrix types (the Python module passes int64 indices and
+// labels: they are range-checked before they are narrowed). exact (optional): receives
+// tritri::to_exact of every output vertex (computed once, also for V_is_exact).
+template <class DV, class DF, class DL>
+EigenArrangement arrange_eigen(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<DF>& F,
+                               const ArrangeOptions& options, const Eigen::MatrixBase<DL>* labels,
+                               const std::string& where, std::vector<ExactVec3>* exact = nullptr) {
+  ArrangeResult result = arrange_validated(eigen_soup(V, F, labels, where), options);
+  OutputMesh& mesh = result.mesh;
+
+  EigenArrangement out;
+  const auto nv = static_cast<Eigen::Index>(mesh.vertices.size());
+  out.V.resize(nv, 3);
+  out.V_is_exact.resize(nv);
+  if (exact) {
+    exact->clear();
+    exact->resize(mesh.vertices.size());
+  }
+  tbb::parallel_for(Eigen::Index{0}, nv, [&](Eigen::Index v) {
+    const tritri::ImplicitPoint& p = mesh.vertices[v];
+    const std::array<double, 3> x = tritri::to_double(p);
+    bool is_exact = true;
+    if (!p.is_explicit() || exact) {
+      const std::array<CGAL::Gmpq, 3> q = tritri::to_exact(p);
+      for (int c = 0; c < 3; ++c) is_exact = is_exact && std::isfinite(x[c]) && CGAL::Gmpq(x[c]) == q[c];
+      if (exact) (*exact)[static_cast<std::size_t>(v)] = q;
+    }
+    for (int c = 0; c < 3; ++c) out.V(v, c) = x[c];
+    out.V_is_exact(v) = is_exact;
+  });
+  set_eigen_faces(out, mesh, result.stats);
+  out.vertices = std::move(mesh.vertices);
+  return out;
+}
+
+// The exact overload of arrange() below for any Eigen matrix types (as arrange_eigen).
+template <class DV, class DF, class DL>
+ExactEigenArrangement arrange_eigen_exact(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<DF>& F,
+                                          const ArrangeOptions& options, const Eigen::MatrixBase<DL>* labels,
+                                          const std::string& where) {
+  ExactArrangeResult result = arrange_validated(exact_eigen_soup(V, F, labels, where), options);
+  ExactOutputMesh& mesh = result.mesh;
+  ExactEigenArrangement out;
+  out.V.resize(static_cast<Eigen::Index>(mesh.vertices.size()), 3);
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+    for (int c = 0; c < 3; ++c) out.V(static_cast<Eigen::Index>(v), c) = std::move(mesh.vertices[v][c]);
+  set_eigen_faces(out, mesh, result.stats);
   return out;
 }
 
@@ -155,6 +243,14 @@ EigenArrangement arrange_eigen(const Eigen::MatrixBase<DV>& V, const Eigen::Matr
 inline EigenArrangement arrange(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ArrangeOptions& options,
                                 const Eigen::VectorXi* labels = nullptr) {
   return detail::arrange_eigen(V, F, options, labels, "arrangements::arrange");
+}
+
+// Exact input, exact output (see the top of this file): any matrix expression of
+// CGAL::Gmpq for V (constrained, so that double expressions still pick the overload above).
+template <class DV, class = std::enable_if_t<std::is_same_v<typename DV::Scalar, CGAL::Gmpq>>>
+ExactEigenArrangement arrange(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixXi& F, const ArrangeOptions& options,
+                              const Eigen::VectorXi* labels = nullptr) {
+  return detail::arrange_eigen_exact(V, F, options, labels, "arrangements::arrange");
 }
 
 }  // namespace arrangements
