@@ -88,14 +88,7 @@ TEST(Arrangement, SharedMeshesPassCheckArrangement) {
   const fs::path dir = tritri_test::shared_meshes_dir();
   TRITRI_REQUIRE_DATA(dir);
   const std::size_t max_triangles = static_cast<std::size_t>(20000 * test_scale());
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-    if (!entry.is_regular_file()) continue;
-    std::string ext = entry.path().extension().string();
-    for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (ext == ".obj" || ext == ".off" || ext == ".stl" || ext == ".ply") files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
+  const std::vector<fs::path> files = tritri_test::mesh_files(dir);
   // Below scale 1, every n-th file only (n about 1 / scale), so sanitizer runs stay short.
   const std::size_t every = test_scale() < 1 ? static_cast<std::size_t>(std::lround(1 / test_scale())) : 1;
   std::size_t eligible = 0;

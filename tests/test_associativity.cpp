@@ -93,13 +93,7 @@ ExactTriangleSoup join(const std::vector<const ExactTriangleSoup*>& parts) {
 }
 
 TriangleSoup to_doubles(const ExactTriangleSoup& e) {  // exact: the coordinates are doubles
-  TriangleSoup s;
-  for (const ExactVec3& v : e.vertices) s.vertices.push_back(tritri::to_double(v));
-  s.triangles = e.triangles;
-  s.label_set = e.label_set;
-  s.label_sets = e.label_sets;
-  s.source = e.source;
-  return s;
+  return tritri_test::with_vertices<Vec3>(e, [](const ExactVec3& v) { return tritri::to_double(v); });
 }
 
 struct Arranged {

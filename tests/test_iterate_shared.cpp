@@ -27,18 +27,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace arrangements;
 
-std::vector<fs::path> mesh_files(const fs::path& dir) {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-    if (!entry.is_regular_file()) continue;
-    std::string ext = entry.path().extension().string();
-    for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (ext == ".obj" || ext == ".off" || ext == ".stl" || ext == ".ply") files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 TEST(Iterate, ArrangingAnExactArrangementAgainFindsNothingNew) {
   const fs::path dir = tritri_test::shared_meshes_dir();
   TRITRI_REQUIRE_DATA(dir);
@@ -48,7 +36,7 @@ TEST(Iterate, ArrangingAnExactArrangementAgainFindsNothingNew) {
   const std::size_t every = scale < 1 ? static_cast<std::size_t>(std::lround(1 / scale)) : 1;
   std::size_t index = 0;
   int iterated = 0, with_new_points = 0;
-  for (const fs::path& f : mesh_files(dir)) {
+  for (const fs::path& f : tritri_test::mesh_files(dir)) {
     TriangleSoup input;
     try {
       input = load_triangle_soup(f.string());

@@ -1,6 +1,7 @@
 // tests/support/exact_soups.h
 //
 // Conversions for the exact-path tests, each exact (no rounding):
+//   with_vertices<To>(soup, convert)  the soup with its vertices converted
 //   exact_soup(soup)      a TriangleSoup with its doubles as rationals (ExactTriangleSoup)
 //   exact_mesh(mesh)      an OutputMesh with its implicit points' exact coordinates
 //   as_soup(mesh)         an exact arrangement as the input of the next arrangement
@@ -21,15 +22,22 @@
 
 namespace tritri_test {
 
-inline arrangements::ExactTriangleSoup exact_soup(const arrangements::TriangleSoup& s) {
-  arrangements::ExactTriangleSoup e;
-  for (const auto& v : s.vertices) e.vertices.push_back({CGAL::Gmpq(v[0]), CGAL::Gmpq(v[1]), CGAL::Gmpq(v[2])});
+// The soup with every vertex converted by `convert`, everything else copied.
+template <class To, class From, class Convert>
+arrangements::BasicTriangleSoup<To> with_vertices(const arrangements::BasicTriangleSoup<From>& s, Convert convert) {
+  arrangements::BasicTriangleSoup<To> e;
+  for (const auto& v : s.vertices) e.vertices.push_back(convert(v));
   e.triangles = s.triangles;
   e.label_set = s.label_set;
   e.label_sets = s.label_sets;
   e.source = s.source;
   e.polygon = s.polygon;
   return e;
+}
+
+inline arrangements::ExactTriangleSoup exact_soup(const arrangements::TriangleSoup& s) {
+  return with_vertices<arrangements::ExactVec3>(
+      s, [](const arrangements::Vec3& v) { return arrangements::ExactVec3{CGAL::Gmpq(v[0]), CGAL::Gmpq(v[1]), CGAL::Gmpq(v[2])}; });
 }
 
 inline arrangements::ExactOutputMesh exact_mesh(const arrangements::OutputMesh& m) {
