@@ -26,7 +26,7 @@
 #include <type_traits>
 #include <utility>
 
-#include <tritri/cgal_kernel.h>
+#include <tritri/kernel_concept.h>
 #include <tritri/double_predicates.h>
 #include <tritri/detail/homogeneous.h>
 #include <tritri/point_bounds.h>

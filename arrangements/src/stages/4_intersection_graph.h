@@ -3,9 +3,9 @@
 // IntersectionGraph: the classified intersections of a triangle soup, ready for
 // triangulation. build_intersection_graph merges the per-pair records of any classifier.
 //
-// Points: ids [0, num_input_vertices) are the input vertices (explicit); the others are
-// new implicit points (LPIs), each geometrically distinct from every other point and
-// from every input vertex (deduplicated exactly: first by definition, then by exact
+// Points (M::Point of the point model: implicit over doubles, or rational): ids
+// [0, num_input_vertices) are the input vertices (explicit); the others are new LPIs,
+// each geometrically distinct from every other point and from every input vertex (deduplicated exactly: first by definition, then by exact
 // coordinate comparison).
 // Per triangle t: triangle_points[t] the points strictly inside it; edge_points[e] for
 // each of its edges e = triangle_edges[t][k] the points strictly inside that edge (edges

@@ -2,9 +2,10 @@
 //
 // LocalTriangulation: the constrained triangulation of one input triangle, built by point
 // insertion and constraint insertion with edge flips (Sloan's algorithm), for stage 5
-// (5_triangulate_triangle.cpp, its only user). All decisions are orient2d on implicit
-// points (tritri's filtered exact predicates) in a projection where the input triangle is
-// not degenerate, times that triangle's orientation there, so that every local triangle
+// (5_triangulate_triangle.cpp, its only user). All decisions are the point model's exact
+// orient2d (M::orient2d_local: implicit points with tritri's filtered predicates, or
+// rational points) in a projection where the input triangle is not degenerate, times that
+// triangle's orientation there, so that every local triangle
 // is positive ("CCW"). Point location is a stochastic visibility walk seeded the same way
 // for every triangle: deterministic.
 #pragma once
