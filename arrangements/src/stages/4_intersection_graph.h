@@ -5,8 +5,8 @@
 //
 // Points (M::Point of the point model: implicit over doubles, or rational): ids
 // [0, num_input_vertices) are the input vertices (explicit); the others are new LPIs,
-// each geometrically distinct from every other point and from every input vertex (deduplicated exactly: first by definition, then by exact
-// coordinate comparison).
+// each geometrically distinct from every other point and from every input vertex
+// (deduplicated exactly: first by definition, then by exact coordinate comparison).
 // Per triangle t: triangle_points[t] the points strictly inside it; edge_points[e] for
 // each of its edges e = triangle_edges[t][k] the points strictly inside that edge (edges
 // are shared between triangles); triangle_segments[t] the constraint segments (point id
