@@ -20,6 +20,8 @@
 #include "arrangements/arrange.h"
 #include "arrangements/arrange_stats.h"
 #include "arrangements/thread_count.h"
+#include "io/write_off.h"
+#include "support/mesh_generators.h"
 #include "support/run_program.h"
 #include "support/shared_meshes.h"
 #include "support/temp_dir.h"
@@ -209,7 +211,7 @@ TEST(ArrangeCli, StatsJsonKeysAreTheSharedList) {
   arrangements::for_each_stat(arrangements::ArrangeStats{},
                               [&](const char* k, const auto&, int) { listed.push_back(k); });
   EXPECT_EQ(printed, listed) << e.out;
-  EXPECT_EQ(listed.size(), 30u);
+  EXPECT_EQ(listed.size(), 33u);
   EXPECT_EQ(help_keys(), listed);
   const std::string text = arrangements::stats_key_list(2, 26, 90);
   std::istringstream lines(text);
@@ -218,6 +220,47 @@ TEST(ArrangeCli, StatsJsonKeysAreTheSharedList) {
     EXPECT_NE(std::string_view(k.meaning), "") << k.key;
     EXPECT_NE(text.find(std::string("  ") + k.key + " "), std::string::npos) << k.key;
   }
+}
+
+// --round safe writes doubles that are an arrangement: the written file arranged again
+// finds nothing, and --check (on the rounded mesh) is clean; rounding to nearest does not
+// give that on this mesh (rotated copies cross at grazing angles). Bad uses are usage errors.
+TEST(ArrangeCli, RoundSafeWritesAMeshThatIsAnArrangement) {
+  tritri_test::TempDir dir;
+  const arrangements::TriangleSoup soup =
+      arrangements::rotated_copies(arrangements::uv_sphere({0.1, 0.2, 0.3}, 1.0, 12, 24), 5);
+  const std::string in = (dir.path() / "copies.off").string();
+  arrangements::write_off(in, soup.vertices, soup.triangles);
+  const std::string safe = (dir.path() / "safe.obj").string(), near = (dir.path() / "near.obj").string();
+
+  const CliRun r = run(in + " -o " + safe + " --round safe --stats --check");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find(" 0 violations, 0 degenerate"), std::string::npos) << r.out;
+  const std::smatch passes = [&] {
+    std::smatch m;
+    std::regex_search(r.out, m, std::regex("\"round_passes\": ([0-9]+)"));
+    return m;
+  }();
+  ASSERT_FALSE(passes.empty()) << r.out;
+  EXPECT_GT(std::stoi(passes[1]), 1) << r.out;
+  EXPECT_TRUE(fs::exists(safe + ".provenance.csv"));
+  const CliRun again = run(safe + " --stats --check");
+  ASSERT_EQ(again.status, 0) << again.out;
+  for (const char* zero : {"\"lpi\": 0,", "\"tpi\": 0,", "\"intersecting_pairs\": 0,", "\"merged_vertices\": 0,",
+                           "\"removed_degenerate\": 0,", "\"round_passes\": 0,"})
+    EXPECT_NE(again.out.find(zero), std::string::npos) << zero << ": " << again.out;
+
+  ASSERT_EQ(run(in + " -o " + near).status, 0);
+  const CliRun near_again = run(near + " --stats");
+  ASSERT_EQ(near_again.status, 0) << near_again.out;
+  EXPECT_EQ(near_again.out.find("\"intersecting_pairs\": 0,"), std::string::npos)
+      << "rounding to nearest kept this mesh an arrangement: the test tells nothing";
+
+  EXPECT_EQ(run(in + " -o " + safe + " --round safe --exact").status, 2);
+  EXPECT_EQ(run(in + " -o " + safe + " --round nearest --exact").status, 2);
+  EXPECT_EQ(run(in + " -o " + safe + " --round magic").status, 2);
+  EXPECT_EQ(run(in + " -o " + safe + " --round safe --round safe").status, 2);
+  EXPECT_EQ(run(in + " -o " + safe + " --round").status, 2);
 }
 
 // The helpers through which the tool adds its own load and write times keep t_total_s the

@@ -146,4 +146,11 @@ ArrangementCheck check_arrangement(const ExactOutputMesh& mesh, std::size_t max_
   return check_points<ExactModel::Kernel>(mesh, P, lo, hi, max_reported);
 }
 
+ArrangementCheck check_arrangement(const RoundedMesh& mesh, std::size_t max_reported) {
+  std::vector<tritri::ImplicitPoint> P(mesh.vertices.size());
+  for (std::size_t v = 0; v < P.size(); ++v) P[v] = tritri::ImplicitPoint::explicit_point(mesh.vertices[v]);
+  // Doubles are their own exact boxes.
+  return check_points<tritri::ImplicitKernel>(mesh, P, mesh.vertices, mesh.vertices, max_reported);
+}
+
 }  // namespace arrangements

@@ -22,6 +22,7 @@
 #include "io/mesh_format.h"
 #include "support/process_usage.h"
 #include "arrangements/load_triangle_soup.h"
+#include "arrangements/round_mesh.h"
 #include "arrangements/thread_count.h"
 #include "arrangements/write_mesh.h"
 
@@ -50,10 +51,19 @@ options:
                           n-gon as n - 2 consecutive triangles) and its label set: PLY face properties, or the
                           side file FILE.provenance.csv for OBJ/OFF
   --exact                 write exact rational coordinates (OBJ/OFF; see README) instead of
-                          coordinates rounded to the nearest double
-  --check                 verify the output exactly: every pair of output triangles with
+                          coordinates rounded to doubles
+  --round MODE            how the output is rounded to doubles (not with --exact):
+                          nearest (the default): every vertex to the nearest double; the
+                          result may self-intersect where rounding moved a vertex through
+                          a nearby triangle;
+                          safe: rounded, re-arranged and rounded again until the rounded
+                          mesh is itself an arrangement (its triangles meet only in shared
+                          vertices and edges, decided exactly); provenance kept; exit
+                          status 4 if that takes more than 20 passes. Stats round_*
+  --check                 verify the arrangement exactly: every pair of triangles with
                           overlapping boxes meets only in shared vertices and edges
-                          (tritri on the implicit points); exit status 3 if not
+                          (tritri on the implicit points; with --round safe, on the rounded
+                          mesh that is written); exit status 3 if not
   --stats                 print one JSON object with counts and stage times on stdout
   --classifier NAME       pair classifier: tritri (tritri::classify through the adapter;
                           default) or native (the 2020 case analysis)
@@ -68,7 +78,8 @@ An option that takes a value may be given once; numbers are plain decimal digits
 const char* kUsageEnd = R"(
 exit status: 0 success, 1 bad input (unreadable, unknown format, malformed, NaN/Inf,
 out-of-range indices, empty mesh) or failed output, 2 bad command line (unknown option,
-missing, empty or out-of-range value, option given twice), 3 --check found a violation.
+missing, empty or out-of-range value, option given twice), 3 --check found a violation,
+4 --round safe did not converge.
 )";
 
 std::string usage() {
@@ -90,6 +101,7 @@ int main(int argc, char** argv) {
   std::optional<std::string> output;
   int threads = 0;
   std::string classifier = "tritri";
+  std::string round = "nearest";
   std::set<std::string> given;  // options with a value seen so far (each may be given once)
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -112,6 +124,9 @@ int main(int argc, char** argv) {
       check = true;
     } else if (a == "--exact") {
       exact = true;
+    } else if (a == "--round") {
+      round = value("--round");
+      if (round != "nearest" && round != "safe") usage_error("unknown rounding '" + round + "' (known: nearest, safe)");
     } else if (a == "--scale") {
       scale = true;
     } else if (a == "--classifier") {
@@ -132,6 +147,7 @@ int main(int argc, char** argv) {
     }
   }
   if (inputs.empty()) usage_error("no input file");
+  if (exact && given.count("--round")) usage_error("--round and --exact exclude each other (--exact does not round)");
   if (output) {
     using arrangements::detail::kWriteFormats;
     const auto format = arrangements::detail::format_of(*output, kWriteFormats);
@@ -158,16 +174,36 @@ int main(int argc, char** argv) {
           auto result = detail::arrange_validated(soup, options);
           ArrangeStats& s = result.stats;
           add_load_time(s, t_load);
+          std::optional<RoundedMesh> rounded;
+          if (round == "safe") {
+            const auto tr = std::chrono::steady_clock::now();
+            RoundSafeOptions ro;
+            ro.threads = workers;
+            RoundReport report;
+            try {
+              rounded = round_safe(result.mesh, ro, &report);
+            } catch (const RoundingError& e) {
+              std::fprintf(stderr, "arrange: %s\n", e.what());
+              return 4;
+            }
+            s.round_passes = report.passes;
+            s.round_max_move = report.max_move;
+            s.round_max_move_rel = report.max_move_relative;
+            add_write_time(s, seconds_since(tr));
+          }
           if (output) {
             const auto tw = std::chrono::steady_clock::now();
             WriteOptions wo;
             wo.exact = exact;
-            write_mesh(*output, result.mesh, wo);
+            if (rounded)
+              write_mesh(*output, *rounded, wo);
+            else
+              write_mesh(*output, result.mesh, wo);
             add_write_time(s, seconds_since(tw));
           }
           if (stats) std::printf("%s\n", stats_json(s).c_str());
           if (check) {
-            const ArrangementCheck c = check_arrangement(result.mesh);
+            const ArrangementCheck c = rounded ? check_arrangement(*rounded) : check_arrangement(result.mesh);
             std::fprintf(stderr,
                          "arrange: check: %zu overlapping output pairs, %zu violations, %zu degenerate triangles\n",
                          c.pairs_checked, c.violations, c.degenerate_triangles);

@@ -4,7 +4,7 @@
 //   with_vertices<To>(soup, convert)  the soup with its vertices converted
 //   exact_soup(soup)      a TriangleSoup with its doubles as rationals (ExactTriangleSoup)
 //   exact_mesh(mesh)      an OutputMesh with its implicit points' exact coordinates
-//   as_soup(mesh)         an exact arrangement as the input of the next arrangement
+//   as_soup(mesh)         an exact (or rounded) arrangement as the input of the next one
 //                         (labels, label sets and sources carried)
 //   sorted_vertices(mesh) the vertex coordinates, sorted lexicographically (comparing
 //                         two arrangements' vertex sets whatever their numbering)
@@ -50,8 +50,9 @@ inline arrangements::ExactOutputMesh exact_mesh(const arrangements::OutputMesh& 
   return e;
 }
 
-inline arrangements::ExactTriangleSoup as_soup(const arrangements::ExactOutputMesh& m) {
-  arrangements::ExactTriangleSoup s;
+template <class Point>
+arrangements::BasicTriangleSoup<Point> as_soup(const arrangements::BasicOutputMesh<Point>& m) {
+  arrangements::BasicTriangleSoup<Point> s;
   s.vertices = m.vertices;
   s.triangles = m.triangles;
   s.label_set = m.label_set;

@@ -49,6 +49,8 @@ struct ArrangeStats {
   double t_load_s = 0, t_preprocess_s = 0, t_detect_s = 0, t_classify_s = 0, t_triangulate_s = 0, t_output_s = 0,
          t_total_s = 0;
   double peak_rss_mb = 0;
+  int round_passes = 0;  // filled by the caller that rounds (round_mesh.h), else 0
+  double round_max_move = 0, round_max_move_rel = 0;
 };
 
 // One row of the table.
@@ -56,7 +58,8 @@ template <class T>
 struct StatEntry {
   const char* key;
   T ArrangeStats::*member;
-  int decimals;  // digits after the decimal point (doubles; 0 for the others)
+  int decimals;  // doubles: digits after the decimal point, or -d: d digits after the point
+                 // of the exponent form (1.234e-16); 0 for the others
   const char* meaning;
 };
 
@@ -104,9 +107,15 @@ inline constexpr auto kArrangeStats = std::make_tuple(
     stat_entry("t_classify_s", &ArrangeStats::t_classify_s, 6,
                "seconds classifying pairs, building the intersection graph"),
     stat_entry("t_triangulate_s", &ArrangeStats::t_triangulate_s, 6, "seconds triangulating"),
-    stat_entry("t_output_s", &ArrangeStats::t_output_s, 6, "seconds making (and writing) the output mesh"),
+    stat_entry("t_output_s", &ArrangeStats::t_output_s, 6, "seconds making (rounding with --round safe, writing) the output mesh"),
     stat_entry("t_total_s", &ArrangeStats::t_total_s, 6, "seconds in all, loading and writing included"),
-    stat_entry("peak_rss_mb", &ArrangeStats::peak_rss_mb, 1, "peak resident memory of the process, MB"));
+    stat_entry("peak_rss_mb", &ArrangeStats::peak_rss_mb, 1, "peak resident memory of the process, MB"),
+    stat_entry("round_passes", &ArrangeStats::round_passes, 0,
+               "passes of rounding and re-arranging of --round safe (0 without it)"),
+    stat_entry("round_max_move", &ArrangeStats::round_max_move, -3,
+               "--round safe: every output vertex lies within this distance of the exact arrangement"),
+    stat_entry("round_max_move_rel", &ArrangeStats::round_max_move_rel, -3,
+               "round_max_move divided by the diagonal of the bounding box"));
 
 // The keys and meanings alone, in order.
 struct StatKey {
@@ -141,7 +150,10 @@ inline std::string stats_json(const ArrangeStats& s) {
       out += '"';
     } else if constexpr (std::is_floating_point_v<T>) {
       char buf[400];  // %.6f of any finite double fits
-      std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
+      if (decimals >= 0)
+        std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
+      else
+        std::snprintf(buf, sizeof buf, "%.*e", -decimals, value);
       out += buf;
     } else {
       out += std::to_string(value);

@@ -3,7 +3,8 @@
 // check_arrangement(mesh): verifies exactly that the triangles of an arrangement meet only
 // in shared vertices and shared edges: every pair of output triangles whose (conservative)
 // bounding boxes overlap is classified with tritri on the implicit points
-// (tritri::ImplicitKernel; rational points of an ExactOutputMesh: CGAL::Epeck), and the pair is a violation unless its intersection is
+// (tritri::ImplicitKernel; rational points of an ExactOutputMesh: CGAL::Epeck; the doubles
+// of a RoundedMesh as explicit points), and the pair is a violation unless its intersection is
 // exactly what it shares by vertex id (nothing, a common vertex, or a common edge). Two
 // triangles with the same three vertices, two distinct vertices at one position, a
 // vertex inside another triangle or on its edge, crossing or overlapping triangles are
@@ -32,5 +33,6 @@ struct ArrangementCheck {
 
 ArrangementCheck check_arrangement(const OutputMesh& mesh, std::size_t max_reported = 10);
 ArrangementCheck check_arrangement(const ExactOutputMesh& mesh, std::size_t max_reported = 10);
+ArrangementCheck check_arrangement(const RoundedMesh& mesh, std::size_t max_reported = 10);
 
 }  // namespace arrangements

@@ -15,6 +15,8 @@
 //   label_set   per triangle: index into label_sets; the union of the labels of every
 //               input triangle (duplicates included) that covers the triangle
 //   label_sets  distinct sorted label sets
+// RoundedMesh: the same with double coordinates (round_mesh.h: rounded to the nearest
+// double, or rounded safely so that it is still an arrangement).
 #pragma once
 
 #include <cstdint>
@@ -37,5 +39,6 @@ struct BasicOutputMesh {
 
 using OutputMesh = BasicOutputMesh<tritri::ImplicitPoint>;
 using ExactOutputMesh = BasicOutputMesh<ExactVec3>;
+using RoundedMesh = BasicOutputMesh<Vec3>;
 
 }  // namespace arrangements

@@ -5,7 +5,8 @@
 //
 // write_mesh(path, mesh, options = {})
 //   path     where to write; the extension (any case) chooses the format: .obj, .off, .ply
-//   mesh     an OutputMesh or an ExactOutputMesh (output_mesh.h; the same files either way)
+//   mesh     an OutputMesh, an ExactOutputMesh or a RoundedMesh (output_mesh.h; the same
+//            files either way; a RoundedMesh's doubles are written as they are)
 //   options  exact = false: each coordinate is to_double() of the vertex (the nearest
 //            double), printed with 17 significant digits, so that reading it back as a
 //            double gives the same double (binary doubles in PLY);
@@ -69,5 +70,6 @@ struct WriteOptions {
 
 void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOptions& options = {});
 void write_mesh(const std::string& path, const ExactOutputMesh& mesh, const WriteOptions& options = {});
+void write_mesh(const std::string& path, const RoundedMesh& mesh, const WriteOptions& options = {});
 
 }  // namespace arrangements

@@ -90,6 +90,11 @@ void append_rational(AtomicFile& f, const CGAL::Gmpq& q, std::string& scratch) {
 
 std::array<CGAL::Gmpq, 3> exact_coordinates(const tritri::ImplicitPoint& p) { return tritri::to_exact(p); }
 const ExactVec3& exact_coordinates(const ExactVec3& p) { return p; }
+std::array<CGAL::Gmpq, 3> exact_coordinates(const Vec3& p) { return {CGAL::Gmpq(p[0]), CGAL::Gmpq(p[1]), CGAL::Gmpq(p[2])}; }
+
+Vec3 nearest_double(const tritri::ImplicitPoint& p) { return tritri::to_double(p); }
+Vec3 nearest_double(const ExactVec3& p) { return tritri::to_double(p); }
+const Vec3& nearest_double(const Vec3& p) { return p; }
 
 // The vertex coordinates as doubles (correctly rounded), refusing those that overflow.
 template <class Mesh>
@@ -97,7 +102,7 @@ std::vector<Vec3> rounded_vertices(const std::string& path, const Mesh& mesh) {
   std::vector<Vec3> out;
   out.reserve(mesh.vertices.size());
   for (const auto& p : mesh.vertices) {
-    out.push_back(tritri::to_double(p));
+    out.push_back(nearest_double(p));
     for (double c : out.back())
       if (!std::isfinite(c))
         throw std::runtime_error(path + ": vertex " + std::to_string(out.size() - 1) +
@@ -310,6 +315,10 @@ void write_mesh(const std::string& path, const OutputMesh& mesh, const WriteOpti
 }
 
 void write_mesh(const std::string& path, const ExactOutputMesh& mesh, const WriteOptions& options) {
+  write_any_mesh(path, mesh, options);
+}
+
+void write_mesh(const std::string& path, const RoundedMesh& mesh, const WriteOptions& options) {
   write_any_mesh(path, mesh, options);
 }
 

@@ -1,0 +1,85 @@
+// arrangements/round_mesh.h
+//
+// After the pipeline: the exact arrangement (OutputMesh or ExactOutputMesh) as a mesh with
+// double coordinates (RoundedMesh, output_mesh.h).
+//
+// round_nearest(mesh)
+//   Every vertex rounded to the nearest double (ties to even), triangles and provenance
+//   unchanged. The result need not be an arrangement any more: rounding can move a vertex
+//   through a nearby triangle, make a thin triangle degenerate, or merge two vertices.
+//
+// round_safe(mesh, options = {}, report = nullptr)
+//   A RoundedMesh that is still an arrangement: its triangles meet only in shared vertices
+//   and shared edges, none is degenerate, no two vertices coincide (decided exactly). In
+//   passes of rounding and arranging:
+//     1. round every vertex (to the level's grid, below);
+//     2. arrange the rounded mesh (the exact pipeline, double path): it finds every
+//        intersection and degeneracy that rounding made and resolves it (new LPI and TPI
+//        points, merged vertices, degenerate triangles removed);
+//     3. if step 2 changed nothing (no intersecting pair, nothing merged or removed, the
+//        same vertices and triangles), the rounded mesh is an arrangement: done. Else
+//        round step 2's result: its new points (made only because rounding moved
+//        vertices) are merged into the nearest vertex that is a double already when one
+//        lies within the level's snap distance (snap rounding's rule: new vertices at
+//        existing hot pixels), else rounded; triangles that collapse are dropped; go to 2.
+//   Levels: level 0 rounds to the nearest double (snap distance: one ulp of the largest
+//   coordinate magnitude L). Some meshes hold features far thinner than an ulp (slivers,
+//   two surfaces 1e-33 apart near a zero coordinate); passes at level 0 then keep making
+//   new points at that scale. When a pass does not reduce the intersecting pairs, grows the
+//   mesh by more than a tenth, or 4 passes did not succeed, the next level starts again
+//   from the exact arrangement, on the uniform grid of spacing h = 2^(8j) ulps of L
+//   (level j = 1..4; snap distance h): unlike the doubles, the grid is as coarse near
+//   zero as anywhere, so features thinner than a cell collapse instead of crossing again.
+//   Input vertices move too at levels >= 1 (onto the grid).
+//   Displacement: the points of a pass move by at most the snap distance or the rounding
+//   from a point of the previous pass's surface; report->max_move sums the largest move
+//   of each pass of the successful level (bounded from exact coordinate differences), so
+//   every vertex of the result lies within it of the exact arrangement's surface.
+//   Termination: there is no proof (3D snap rounding with a proven bound needs a grid far
+//   coarser than doubles); at most kLevels x 4 = 20 passes are made (options.max_passes
+//   lowers that), and what is measured (tests/test_round_safe.cpp: every shared mesh with
+//   intersections, MCUT and EMBER pairs, rotated copies) is given in the tests' output.
+//   Provenance is kept: a triangle of the result lies in (the rounded image of) the input
+//   triangle `source` names, with the union of labels of every input triangle covering it;
+//   triangles that collapsed to a segment or a point are gone (they had no area).
+//
+// Preconditions: a mesh as arrange() makes it (every index in range, per-triangle arrays
+// of the right size); vertices within the double range.
+// Throws std::invalid_argument for options.max_passes < 1, RoundingError when the passes
+// do not converge within options.max_passes (or a vertex rounds beyond the double range).
+// Cost: round_nearest: one exact rounding per implicit vertex. round_safe: per pass one
+// rounding and one run of the pipeline on the rounded mesh (about the time of arranging a
+// clean mesh of that size).
+#pragma once
+
+#include <stdexcept>
+
+#include "arrangements/output_mesh.h"
+
+namespace arrangements {
+
+struct RoundSafeOptions {
+  int max_passes = 20;
+  int threads = 0;  // worker threads of the pipeline runs: 0 for all cores
+};
+
+struct RoundReport {
+  int passes = 0;                   // roundings done (1: rounding to nearest was enough)
+  double max_move = 0;              // the displacement bound above (model units)
+  double max_move_relative = 0;     // max_move / the diagonal of the result's bounding box
+  double grid = 0;                  // 0: rounded to nearest doubles (level 0); else the
+                                    // spacing of the uniform grid of the level that succeeded
+};
+
+struct RoundingError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+RoundedMesh round_nearest(const OutputMesh& mesh);
+RoundedMesh round_nearest(const ExactOutputMesh& mesh);
+
+RoundedMesh round_safe(const OutputMesh& mesh, const RoundSafeOptions& options = {}, RoundReport* report = nullptr);
+RoundedMesh round_safe(const ExactOutputMesh& mesh, const RoundSafeOptions& options = {},
+                       RoundReport* report = nullptr);
+
+}  // namespace arrangements

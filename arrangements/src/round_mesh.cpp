@@ -1,0 +1,265 @@
+// round_nearest / round_safe (arrangements/round_mesh.h): rounding the exact arrangement to
+// doubles, and the passes of rounding and re-arranging that keep it an arrangement.
+#include "arrangements/round_mesh.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <tritri/implicit_point.h>
+
+#include "arrangements/arrange.h"
+
+namespace arrangements {
+namespace {
+
+// The exact coordinates of a vertex (rationals), and whether it is a double already.
+bool is_double(const tritri::ImplicitPoint& p) { return p.is_explicit(); }
+bool is_double(const ExactVec3&) { return false; }  // decided by rounding: it moves by 0
+ExactVec3 exact_coordinates(const tritri::ImplicitPoint& p) { return tritri::to_exact(p); }
+const ExactVec3& exact_coordinates(const ExactVec3& p) { return p; }
+Vec3 double_coordinates(const tritri::ImplicitPoint& p) { return p.approx(); }  // explicit points only
+Vec3 double_coordinates(const ExactVec3&) { return {}; }                         // never asked
+
+// An upper bound of the distance between rational q and double point p (the coordinate
+// differences are exact rationals; the factor and one ulp cover to_double, the squares and
+// the root).
+double distance_bound(const ExactVec3& q, const Vec3& p) {
+  double sum = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double d = std::abs(CGAL::to_double(q[k] - CGAL::Gmpq(p[k])));
+    sum += d * d;
+  }
+  return sum == 0 ? 0.0
+                  : std::nextafter(std::sqrt(sum) * (1 + 8 * std::numeric_limits<double>::epsilon()),
+                                   std::numeric_limits<double>::infinity());
+}
+
+// The grid a pass rounds to: spacing 0 is "the nearest double"; else a power of two h, and
+// every coordinate goes to the nearest multiple of h (a double: |x| / h < 2^53 for the
+// spacings used). The quotient by h and its rounding to an integer are exact.
+Vec3 round_point(const Vec3& nearest, double h) {
+  if (h == 0) return nearest;
+  Vec3 out;
+  for (int k = 0; k < 3; ++k) out[k] = std::nearbyint(nearest[k] / h) * h;
+  return out;
+}
+
+// Rounding levels: level 0 rounds to the nearest double; level j >= 1 to the uniform grid of
+// spacing 2^(8j) units in the last place of the largest coordinate magnitude. A uniform grid,
+// unlike the doubles, is as coarse near zero as anywhere: features thinner than a cell (a
+// sliver, two surfaces 1e-33 apart near a zero coordinate) collapse instead of crossing
+// again after every pass.
+constexpr int kLevels = 5;
+constexpr int kPassesPerLevel = 4;
+
+double level_spacing(double largest, int level) {
+  if (level == 0) return 0;
+  int exponent = 0;
+  std::frexp(largest > 0 ? largest : 1.0, &exponent);  // largest < 2^exponent
+  return std::ldexp(1.0, exponent - std::numeric_limits<double>::digits + 8 * level);
+}
+
+// The mesh with every vertex rounded to the grid of spacing h, except that a vertex that
+// is not a double and lies within `snap` of a double vertex (exact squared distance) is
+// merged into the nearest one. Triangles that collapse to an edge or a point are dropped;
+// vertices are renumbered in first-use order. `max_move` receives the largest distance a
+// vertex moved.
+template <class Mesh>
+RoundedMesh round_mesh(const Mesh& mesh, double h, double snap, double& max_move) {
+  const std::size_t nv = mesh.vertices.size();
+  std::vector<char> fixed(nv);
+  std::vector<ExactVec3> exact(nv);
+  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
+    fixed[v] = is_double(mesh.vertices[v]);
+    if (!fixed[v]) exact[v] = exact_coordinates(mesh.vertices[v]);
+  });
+  auto nearest_double = [&](std::size_t v) {
+    return fixed[v] ? double_coordinates(mesh.vertices[v]) : tritri::to_double(exact[v]);
+  };
+  // The nearest double vertex within `snap` of each other vertex. Candidates from a grid of
+  // cells of size 2 * snap over the double vertices: a vertex is within snap / 2 of its
+  // nearest double (snap >= an ulp of the largest magnitude), so each candidate lies in
+  // the 27 cells around it; the cell indices stay below 2^53.
+  std::vector<int> target(nv, -1);
+  if (snap > 0) {
+    const double cell = 2 * snap;
+    using Key = std::array<long long, 3>;
+    auto key_of = [cell](const Vec3& p) {
+      return Key{static_cast<long long>(std::floor(p[0] / cell)), static_cast<long long>(std::floor(p[1] / cell)),
+                 static_cast<long long>(std::floor(p[2] / cell))};
+    };
+    std::vector<std::pair<Key, int>> grid;
+    for (std::size_t v = 0; v < nv; ++v)
+      if (fixed[v]) grid.emplace_back(key_of(double_coordinates(mesh.vertices[v])), static_cast<int>(v));
+    std::sort(grid.begin(), grid.end());
+    const CGAL::Gmpq limit = CGAL::Gmpq(snap) * CGAL::Gmpq(snap);
+    tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t i) {
+      if (fixed[i]) return;
+      const Key k = key_of(nearest_double(i));
+      CGAL::Gmpq best;
+      for (long long dx = -1; dx <= 1; ++dx)
+        for (long long dy = -1; dy <= 1; ++dy)
+          for (long long dz = -1; dz <= 1; ++dz) {
+            const Key c{k[0] + dx, k[1] + dy, k[2] + dz};
+            for (auto it = std::lower_bound(grid.begin(), grid.end(), std::pair<Key, int>{c, -1});
+                 it != grid.end() && it->first == c; ++it) {
+              const Vec3 w = double_coordinates(mesh.vertices[it->second]);
+              CGAL::Gmpq d2 = 0;
+              for (int j = 0; j < 3; ++j) {
+                const CGAL::Gmpq d = exact[i][j] - CGAL::Gmpq(w[j]);
+                d2 += d * d;
+              }
+              if (d2 <= limit && (target[i] < 0 || d2 < best || (d2 == best && it->second < target[i]))) {
+                target[i] = it->second;
+                best = d2;
+              }
+            }
+          }
+    });
+  }
+  std::vector<Vec3> position(nv);
+  std::vector<int> representative(nv);
+  std::vector<double> move(nv, 0.0);
+  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
+    representative[v] = target[v] >= 0 ? target[v] : static_cast<int>(v);
+    if (target[v] >= 0) {
+      move[v] = distance_bound(exact[v], double_coordinates(mesh.vertices[target[v]]));
+      return;
+    }
+    position[v] = round_point(nearest_double(v), h);
+    for (double c : position[v])
+      if (!std::isfinite(c))
+        throw RoundingError("round: vertex " + std::to_string(v) + " rounds beyond the double range");
+    if (fixed[v]) {
+      const Vec3 d = double_coordinates(mesh.vertices[v]);
+      move[v] = distance_bound({CGAL::Gmpq(d[0]), CGAL::Gmpq(d[1]), CGAL::Gmpq(d[2])}, position[v]);
+    } else {
+      move[v] = distance_bound(exact[v], position[v]);
+    }
+  });
+  max_move = nv == 0 ? 0.0 : *std::max_element(move.begin(), move.end());
+
+  RoundedMesh out;
+  std::vector<int> index(nv, -1);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    Tri f;
+    for (int k = 0; k < 3; ++k) f[k] = representative[mesh.triangles[t][k]];
+    if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue;
+    for (int& i : f) {
+      if (index[i] < 0) {
+        index[i] = static_cast<int>(out.vertices.size());
+        out.vertices.push_back(position[i]);
+      }
+      i = index[i];
+    }
+    out.triangles.push_back(f);
+    out.source.push_back(mesh.source[t]);
+    out.label_set.push_back(mesh.label_set[t]);
+  }
+  out.label_sets = mesh.label_sets;
+  return out;
+}
+
+double largest_magnitude(const std::vector<Vec3>& V) {
+  double largest = 0;
+  for (const Vec3& p : V)
+    for (double c : p) largest = std::max(largest, std::abs(c));
+  return largest;
+}
+
+double bounding_box_diagonal(const std::vector<Vec3>& V) {
+  if (V.empty()) return 0;
+  Vec3 lo = V[0], hi = V[0];
+  for (const Vec3& p : V)
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+}
+
+// True when arranging changed nothing: the mesh was an arrangement already.
+bool unchanged(const ArrangeStats& s) {
+  return s.intersecting_pairs == 0 && s.merged_vertices == 0 && s.removed_degenerate == 0 &&
+         s.removed_duplicate == 0 && s.out_vertices == s.in_vertices && s.out_triangles == s.in_triangles;
+}
+
+template <class Mesh>
+RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, RoundReport* report) {
+  if (options.max_passes < 1)
+    throw std::invalid_argument("round_safe: max_passes must be at least 1, got " +
+                                std::to_string(options.max_passes));
+  ArrangeOptions arrange_options;
+  arrange_options.threads = options.threads;
+  double move = 0;
+  RoundReport r;
+  std::size_t last_intersecting = 0;
+  const RoundedMesh nearest = round_mesh(mesh, 0, 0, move);
+  const double largest = largest_magnitude(nearest.vertices);
+  const double ulp = level_spacing(largest, 1) / 256;
+  for (int level = 0; level < kLevels; ++level) {
+    // Each level starts again from the exact arrangement.
+    const double h = level_spacing(largest, level);
+    const double snap = level == 0 ? ulp : h;
+    RoundedMesh rounded = level == 0 ? nearest : round_mesh(mesh, h, snap, move);
+    double level_move = move;
+    const std::size_t level_triangles = rounded.triangles.size();
+    for (int pass = 1; pass <= kPassesPerLevel; ++pass) {
+      ++r.passes;
+      TriangleSoup soup;
+      soup.vertices = rounded.vertices;
+      soup.triangles = rounded.triangles;
+      soup.label_set = rounded.label_set;
+      soup.label_sets = rounded.label_sets;
+      soup.source = rounded.source;
+      ArrangeResult again = arrange(soup, arrange_options);
+      if (unchanged(again.stats)) {
+        r.max_move = level_move;
+        r.grid = h;
+        const double diagonal = bounding_box_diagonal(rounded.vertices);
+        r.max_move_relative = diagonal > 0 ? r.max_move / diagonal : 0.0;
+        if (report) *report = r;
+        return rounded;
+      }
+      // A pass that does not reduce the intersections, or grows the mesh by more than a
+      // tenth, means this grid keeps making features it cannot hold: go to the next level
+      // (before the passes grow the mesh without bound).
+      const bool worse = (pass > 1 && again.stats.intersecting_pairs >= last_intersecting) ||
+                         again.stats.out_triangles > level_triangles + level_triangles / 10;
+      last_intersecting = again.stats.intersecting_pairs;
+      if (worse || r.passes >= options.max_passes) break;
+      rounded = round_mesh(again.mesh, h, snap, move);
+      level_move += move;
+    }
+    if (r.passes >= options.max_passes) break;
+  }
+  throw RoundingError("round_safe: the rounded mesh still has " + std::to_string(last_intersecting) +
+                      " intersecting pairs after " + std::to_string(r.passes) + " passes of rounding and arranging");
+}
+
+}  // namespace
+
+RoundedMesh round_nearest(const OutputMesh& mesh) {
+  double move = 0;
+  return round_mesh(mesh, 0, 0, move);
+}
+
+RoundedMesh round_nearest(const ExactOutputMesh& mesh) {
+  double move = 0;
+  return round_mesh(mesh, 0, 0, move);
+}
+
+RoundedMesh round_safe(const OutputMesh& mesh, const RoundSafeOptions& options, RoundReport* report) {
+  return round_in_passes(mesh, options, report);
+}
+
+RoundedMesh round_safe(const ExactOutputMesh& mesh, const RoundSafeOptions& options, RoundReport* report) {
+  return round_in_passes(mesh, options, report);
+}
+
+}  // namespace arrangements

@@ -1,0 +1,239 @@
+// Safe rounding (issue 14, arrangements/round_mesh.h): the rounded mesh is still an
+// arrangement, checked exactly and independently of round_safe's own loop:
+//   - check_arrangement on the rounded doubles is clean;
+//   - arranging the rounded mesh again finds nothing: no LPI, no TPI, no intersecting pair,
+//     nothing merged or removed, the same triangles;
+//   - provenance: every triangle keeps a source of the exact arrangement with one of its
+//     label sets, and the area per source is that of the exact arrangement (to rounding);
+//   - the displacement bound is a few ulps of the model's size.
+// On every shared mesh with intersections, on generated rotated copies (near-degenerate
+// crossings) and on rational scenes (the exact path). Rounding to nearest must fail the
+// check on some of them, or these tests could not tell the two apart.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "arrangements/arrange.h"
+#include "arrangements/check_arrangement.h"
+#include "arrangements/load_triangle_soup.h"
+#include "arrangements/round_mesh.h"
+#include "support/exact_soups.h"
+#include "support/mesh_generators.h"
+#include "support/shared_meshes.h"
+#include "support/test_scale.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace arrangements;
+
+Vec3 as_double(const tritri::ImplicitPoint& p) { return tritri::to_double(p); }
+Vec3 as_double(const ExactVec3& p) { return tritri::to_double(p); }
+Vec3 as_double(const Vec3& p) { return p; }
+
+// Area of every triangle summed per source (doubles: a measure, not a decision).
+template <class Mesh>
+std::map<std::int64_t, double> area_per_source(const Mesh& m, double& total) {
+  std::vector<Vec3> V;
+  for (const auto& p : m.vertices) V.push_back(as_double(p));
+  std::map<std::int64_t, double> area;
+  total = 0;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const Vec3 &a = V[m.triangles[t][0]], &b = V[m.triangles[t][1]], &c = V[m.triangles[t][2]];
+    const Vec3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
+    const double at = 0.5 * std::sqrt(x * x + y * y + z * z);
+    area[m.source[t]] += at;
+    total += at;
+  }
+  return area;
+}
+
+// Every fact above for the safe rounding of `exact` (an OutputMesh or ExactOutputMesh).
+// Returns the report; `nearest_ok` receives whether rounding to nearest alone was valid.
+template <class Mesh>
+RoundReport expect_safe_rounding(const Mesh& exact, const std::string& name, bool& nearest_ok) {
+  RoundReport report;
+  const RoundedMesh r = round_safe(exact, RoundSafeOptions{}, &report);
+  EXPECT_GE(report.passes, 1) << name;
+  const ArrangementCheck c = check_arrangement(r);
+  EXPECT_TRUE(c.ok()) << name << ": " << (c.examples.empty() ? "" : c.examples.front());
+
+  const ArrangeResult again = arrange(tritri_test::as_soup(r), ArrangeOptions{});
+  const ArrangeStats& s = again.stats;
+  EXPECT_EQ(s.intersection_points, 0u) << name;
+  EXPECT_EQ(s.tpi, 0u) << name;
+  EXPECT_EQ(s.intersecting_pairs, 0u) << name;
+  EXPECT_EQ(s.merged_vertices + s.removed_degenerate + s.removed_duplicate, 0u) << name;
+  EXPECT_EQ(s.out_triangles, r.triangles.size()) << name;
+  EXPECT_EQ(s.out_vertices, r.vertices.size()) << name;
+
+  // Provenance: (source, label set) pairs of the rounded mesh are those of the exact one.
+  std::set<std::pair<std::int64_t, LabelSet>> exact_provenance;
+  for (std::size_t t = 0; t < exact.triangles.size(); ++t)
+    exact_provenance.insert({exact.source[t], exact.label_sets[exact.label_set[t]]});
+  for (std::size_t t = 0; t < r.triangles.size(); ++t)
+    if (!exact_provenance.count({r.source[t], r.label_sets[r.label_set[t]]})) {
+      ADD_FAILURE() << name << ": rounded triangle " << t << " has provenance the exact arrangement lacks";
+      break;
+    }
+  double total_exact = 0, total_rounded = 0;
+  const auto ae = area_per_source(exact, total_exact);
+  const auto ar = area_per_source(r, total_rounded);
+  // Rounded to nearest doubles, every input triangle keeps its area (to rounding); on a
+  // coarser grid, layers thinner than a cell may merge into one (the region keeps one
+  // source), so a source may lose area but never gains any.
+  int sources_off = 0;
+  for (const auto& [source, area] : ae) {
+    const auto it = ar.find(source);
+    const double rounded = it == ar.end() ? 0.0 : it->second;
+    const bool ok = report.grid == 0 ? std::abs(rounded - area) <= 1e-9 * total_exact
+                                     : rounded <= area + 1e-9 * total_exact;
+    if (!ok && sources_off++ < 3)
+      ADD_FAILURE() << name << ": source " << source << " has area " << rounded << ", exact " << area;
+  }
+  for (const auto& [source, area] : ar)
+    EXPECT_TRUE(ae.count(source)) << name << ": source " << source << " is new";
+  // The coarsest level's grid is 2^32 ulps of the largest magnitude (about 5e-7 of it).
+  EXPECT_LE(report.max_move_relative, 1e-6) << name;
+  EXPECT_EQ(report.max_move == 0, report.max_move_relative == 0) << name;
+
+  nearest_ok = check_arrangement(round_nearest(exact)).ok();
+  if (!nearest_ok) {
+    EXPECT_GT(report.passes, 1) << name << ": rounding to nearest was not valid";
+  }
+  return report;
+}
+
+TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
+  const fs::path dir = tritri_test::shared_meshes_dir();
+  TRITRI_REQUIRE_DATA(dir);
+  const double scale = tritri_test::test_scale();
+  const std::size_t every = scale < 1 ? static_cast<std::size_t>(std::lround(1 / scale)) : 1;
+  std::size_t index = 0;
+  int rounded = 0, more_than_one_pass = 0, coarser_grid = 0, nearest_invalid = 0, max_passes = 0;
+  double max_relative = 0;
+  std::string max_relative_mesh;
+  for (const fs::path& f : tritri_test::mesh_files(dir)) {
+    TriangleSoup input;
+    try {
+      input = load_triangle_soup(f.string());
+    } catch (const InputError&) {
+      continue;  // bad files of the collection: test_load_triangle_soup's business
+    }
+    const ArrangeResult first = arrange(input, ArrangeOptions{});
+    if (first.stats.intersection_points + first.stats.tpi == 0) continue;
+    if (index++ % every != 0) continue;
+    bool nearest_ok = true;
+    const RoundReport report = expect_safe_rounding(first.mesh, f.string(), nearest_ok);
+    ++rounded;
+    more_than_one_pass += report.passes > 1;
+    coarser_grid += report.grid > 0;
+    nearest_invalid += !nearest_ok;
+    max_passes = std::max(max_passes, report.passes);
+    if (report.max_move_relative > max_relative) {
+      max_relative = report.max_move_relative;
+      max_relative_mesh = f.string();
+    }
+  }
+  EXPECT_GT(rounded, 0);
+  if (scale >= 1) {
+    EXPECT_GT(nearest_invalid, 0) << "rounding to nearest was valid everywhere: the test tells nothing";
+  }
+  std::printf("rounded %d shared meshes with intersections: %d needed more than one pass (at most %d), %d a "
+              "coarser grid, %d were invalid rounded to nearest; largest move / bounding-box diagonal %.3g (%s)\n",
+              rounded, more_than_one_pass, max_passes, coarser_grid, nearest_invalid, max_relative,
+              max_relative_mesh.c_str());
+}
+
+TEST(RoundSafe, RotatedCopiesOfASphere) {
+  // Copies rotated about one axis cross at grazing angles near the poles: many LPIs and
+  // TPIs within an ulp of other vertices and triangles. k = 2 rotates by pi, so the copies
+  // are two layers about 1e-16 apart (sin(pi) is not 0 in doubles): rounding must merge
+  // them (a coarser grid).
+  for (int k : {2, 5}) {
+    const TriangleSoup soup = rotated_copies(uv_sphere({0.1, 0.2, 0.3}, 1.0, 12, 24), k);
+    const ArrangeResult first = arrange(soup, ArrangeOptions{});
+    ASSERT_GT(first.stats.intersection_points, 0u);
+    bool nearest_ok = true;
+    const RoundReport report = expect_safe_rounding(first.mesh, "rotated copies k = " + std::to_string(k), nearest_ok);
+    EXPECT_FALSE(nearest_ok) << k;
+    EXPECT_GT(report.grid, 0) << k;  // nearest doubles alone do not settle these
+    std::printf("rotated copies k = %d: %d passes, grid %.3g, largest move / diagonal %.3g\n", k, report.passes,
+                report.grid, report.max_move_relative);
+  }
+}
+
+TEST(RoundSafe, NearlyCoincidentLayersWithDifferentTriangulationsAreRefusedCleanly) {
+  // The known limit: three copies rotated by 2 pi / 3 lie within 1e-16 of each other, each
+  // triangulated differently; at every level the rounded layers cross again in thousands
+  // of pairs. round_safe gives up with RoundingError within its pass budget (no growth
+  // without bound); `arrange --round safe` exits with status 4.
+  const ArrangeResult first =
+      arrange(rotated_copies(uv_sphere({0.1, 0.2, 0.3}, 1.0, 12, 24), 3), ArrangeOptions{});
+  EXPECT_THROW(round_safe(first.mesh), RoundingError);
+}
+
+TEST(RoundSafe, RationalScenesOnTheExactPath) {
+  // A grid in the plane z = 1/3 crossed by a tilted grid with coordinates in sevenths:
+  // every vertex and every new point rational, none a double.
+  auto q = [](long n, long d) { return CGAL::Gmpq(n, d); };
+  for (int tilt : {1, 3, 7}) {
+    ExactTriangleSoup s = tritri_test::exact_soup(grid(4, 1.0, 0.0));
+    for (auto& v : s.vertices) v[2] = q(1, 3);
+    ExactTriangleSoup t = tritri_test::exact_soup(grid(4, 1.0, 0.0));
+    for (auto& v : t.vertices) {
+      // x' = x/7 + 1/11, z' = x * tilt / 7 - 1/5 (a plane through the first grid)
+      const CGAL::Gmpq x = v[0];
+      v[0] = x / q(7, 1) + q(1, 11);
+      v[2] = x * q(tilt, 7) - q(1, 5);
+      v[1] = v[1] + q(1, 13);
+    }
+    const std::size_t offset = s.vertices.size();
+    for (auto& v : t.vertices) s.vertices.push_back(v);
+    for (auto f : t.triangles) {
+      for (int& i : f) i += static_cast<int>(offset);
+      s.triangles.push_back(f);
+      s.label_set.push_back(1);
+      s.source.push_back(static_cast<std::int64_t>(s.source.size()));
+    }
+    s.label_sets = {{0}, {1}};
+    const ExactArrangeResult first = arrange(s, ArrangeOptions{});
+    ASSERT_GT(first.stats.intersection_points, 0u);
+    bool nearest_ok = true;
+    const RoundReport report = expect_safe_rounding(first.mesh, "rational grids, tilt " + std::to_string(tilt), nearest_ok);
+    EXPECT_GT(report.max_move, 0);  // no vertex is a double
+  }
+}
+
+TEST(RoundSafe, AnArrangementOfDoublesIsKeptAsItIs) {
+  const TriangleSoup soup = concatenate(box({0, 0, 0}, {1, 1, 1}), box({2, 0, 0}, {3, 1, 1}));
+  const ArrangeResult a = arrange(soup, ArrangeOptions{});
+  RoundReport report;
+  const RoundedMesh r = round_safe(a.mesh, RoundSafeOptions{}, &report);
+  EXPECT_EQ(report.passes, 1);
+  EXPECT_EQ(report.max_move, 0);
+  ASSERT_EQ(r.vertices.size(), a.mesh.vertices.size());
+  for (std::size_t v = 0; v < r.vertices.size(); ++v) EXPECT_EQ(r.vertices[v], a.mesh.vertices[v].approx());
+  EXPECT_EQ(r.triangles, a.mesh.triangles);
+  EXPECT_EQ(r.source, a.mesh.source);
+  EXPECT_EQ(r.label_set, a.mesh.label_set);
+}
+
+TEST(RoundSafe, PassLimit) {
+  const ArrangeResult a = arrange(rotated_copies(uv_sphere({0.1, 0.2, 0.3}, 1.0, 12, 24), 5), ArrangeOptions{});
+  EXPECT_THROW(round_safe(a.mesh, RoundSafeOptions{.max_passes = 0}), std::invalid_argument);
+  RoundReport report;
+  round_safe(a.mesh, RoundSafeOptions{}, &report);
+  ASSERT_GT(report.passes, 1);
+  EXPECT_THROW(round_safe(a.mesh, RoundSafeOptions{.max_passes = report.passes - 1}), RoundingError);
+  EXPECT_NO_THROW(round_safe(a.mesh, RoundSafeOptions{.max_passes = report.passes}));
+}
+
+}  // namespace
