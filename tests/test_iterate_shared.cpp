@@ -18,6 +18,7 @@
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/write_mesh.h"
 #include "support/exact_soups.h"
+#include "support/loadable_meshes.h"
 #include "support/shared_meshes.h"
 #include "support/temp_dir.h"
 #include "support/test_scale.h"
@@ -36,14 +37,8 @@ TEST(Iterate, ArrangingAnExactArrangementAgainFindsNothingNew) {
   const std::size_t every = scale < 1 ? static_cast<std::size_t>(std::lround(1 / scale)) : 1;
   std::size_t index = 0;
   int iterated = 0, with_new_points = 0;
-  for (const fs::path& f : tritri_test::mesh_files(dir)) {
-    TriangleSoup input;
-    try {
-      input = load_triangle_soup(f.string());
-    } catch (const InputError&) {
-      continue;  // bad files of the collection: test_load_triangle_soup's business
-    }
-    if (index++ % every != 0) continue;
+  tritri_test::for_each_loadable_mesh(dir, [&](const fs::path& f, const TriangleSoup& input) {
+    if (index++ % every != 0) return;
     const ArrangeResult first = arrange(input, ArrangeOptions{});
     const fs::path exact_file = tmp.path() / "a.obj";
     write_mesh(exact_file.string(), first.mesh, WriteOptions{.exact = true});
@@ -69,7 +64,7 @@ TEST(Iterate, ArrangingAnExactArrangementAgainFindsNothingNew) {
     EXPECT_TRUE(c2.ok()) << name << " (again): " << (c2.examples.empty() ? "" : c2.examples.front());
     with_new_points += first.stats.intersection_points > 0;
     ++iterated;
-  }
+  });
   EXPECT_GT(with_new_points, 0);
   std::printf("iterated %d shared meshes (%d with intersection points)\n", iterated, with_new_points);
 }

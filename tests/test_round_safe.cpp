@@ -24,6 +24,7 @@
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/round_mesh.h"
 #include "support/exact_soups.h"
+#include "support/loadable_meshes.h"
 #include "support/mesh_generators.h"
 #include "support/shared_meshes.h"
 #include "support/test_scale.h"
@@ -120,16 +121,10 @@ TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
   int rounded = 0, more_than_one_pass = 0, coarser_grid = 0, nearest_invalid = 0, max_passes = 0;
   double max_relative = 0;
   std::string max_relative_mesh;
-  for (const fs::path& f : tritri_test::mesh_files(dir)) {
-    TriangleSoup input;
-    try {
-      input = load_triangle_soup(f.string());
-    } catch (const InputError&) {
-      continue;  // bad files of the collection: test_load_triangle_soup's business
-    }
+  tritri_test::for_each_loadable_mesh(dir, [&](const fs::path& f, const TriangleSoup& input) {
     const ArrangeResult first = arrange(input, ArrangeOptions{});
-    if (first.stats.intersection_points + first.stats.tpi == 0) continue;
-    if (index++ % every != 0) continue;
+    if (first.stats.intersection_points + first.stats.tpi == 0) return;
+    if (index++ % every != 0) return;
     bool nearest_ok = true;
     const RoundReport report = expect_safe_rounding(first.mesh, f.string(), nearest_ok);
     ++rounded;
@@ -141,7 +136,7 @@ TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
       max_relative = report.max_move_relative;
       max_relative_mesh = f.string();
     }
-  }
+  });
   EXPECT_GT(rounded, 0);
   if (scale >= 1) {
     EXPECT_GT(nearest_invalid, 0) << "rounding to nearest was valid everywhere: the test tells nothing";
