@@ -19,6 +19,7 @@
 #include <arrangements/input_error.h>
 #include <arrangements/load_triangle_soup.h>
 #include <arrangements/arrange_stats.h>
+#include <arrangements/round_mesh.h>
 #include <arrangements/thread_count.h>
 #include <tritri/classify.h>
 #include <tritri/double_kernel.h>
@@ -33,6 +34,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -208,9 +210,71 @@ nb::dict arrangement_dict(std::vector<double>&& rounded, std::vector<std::uint8_
   return d;
 }
 
+// rounding="safe": the arrangement `out` (EigenArrangement or ExactEigenArrangement) rounded
+// by round_safe (round_mesh.h). The dict is that of the rounded mesh, an arrangement of
+// doubles itself: V (every row exact for it, V_is_exact all true), F, source, label_set,
+// label_sets, and stats with the round_* keys. RoundingError becomes RuntimeError.
+template <class Out>
+nb::dict safely_rounded_dict(Out&& out, int threads) {
+  const auto nf = static_cast<std::size_t>(out.F.rows());
+  arrangements::RoundedMesh rounded;
+  arrangements::RoundReport report;
+  {
+    nb::gil_scoped_release release;
+    auto to_mesh = [&](auto& mesh) {
+      mesh.triangles.resize(nf);
+      mesh.source.resize(nf);
+      mesh.label_set.resize(nf);
+      for (std::size_t i = 0; i < nf; ++i) {
+        const auto r = static_cast<Eigen::Index>(i);
+        mesh.triangles[i] = {out.F(r, 0), out.F(r, 1), out.F(r, 2)};
+        mesh.source[i] = out.source(r);
+        mesh.label_set[i] = out.label_set(r);
+      }
+      mesh.label_sets = out.label_sets;
+    };
+    arrangements::RoundSafeOptions options;
+    options.threads = threads;
+    if constexpr (std::is_same_v<std::decay_t<Out>, arrangements::EigenArrangement>) {
+      arrangements::OutputMesh mesh;
+      mesh.vertices = std::move(out.vertices);
+      to_mesh(mesh);
+      rounded = arrangements::round_safe(mesh, options, &report);
+    } else {
+      arrangements::ExactOutputMesh mesh;
+      mesh.vertices.resize(static_cast<std::size_t>(out.V.rows()));
+      for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+        const auto r = static_cast<Eigen::Index>(v);
+        mesh.vertices[v] = {out.V(r, 0), out.V(r, 1), out.V(r, 2)};
+      }
+      to_mesh(mesh);
+      rounded = arrangements::round_safe(mesh, options, &report);
+    }
+  }
+  arrangements::EigenArrangement plain;  // the rounded mesh's faces in the dict's layout
+  const auto nr = static_cast<Eigen::Index>(rounded.triangles.size());
+  plain.F.resize(nr, 3);
+  plain.source.resize(nr);
+  plain.label_set.resize(nr);
+  for (Eigen::Index i = 0; i < nr; ++i) {
+    for (int c = 0; c < 3; ++c) plain.F(i, c) = rounded.triangles[static_cast<std::size_t>(i)][c];
+    plain.source(i) = static_cast<int>(rounded.source[static_cast<std::size_t>(i)]);
+    plain.label_set(i) = rounded.label_set[static_cast<std::size_t>(i)];
+  }
+  plain.label_sets = std::move(rounded.label_sets);
+  plain.stats = out.stats;
+  plain.stats.round_passes = report.passes;
+  plain.stats.round_max_move = report.max_move;
+  plain.stats.round_max_move_rel = report.max_move_relative;
+  std::vector<double> v(3 * rounded.vertices.size());
+  for (std::size_t i = 0; i < rounded.vertices.size(); ++i)
+    for (int c = 0; c < 3; ++c) v[3 * i + c] = rounded.vertices[i][c];
+  return arrangement_dict(std::move(v), std::vector<std::uint8_t>(rounded.vertices.size(), 1), plain);
+}
+
 // The double path; exact_output adds V_exact (the exact output vertices as Fractions).
 nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels, const std::string& classifier,
-                 int threads, bool exact_output) {
+                 int threads, bool exact_output, bool round_safe) {
   const arrangements::ArrangeOptions options = arrange_options(classifier, threads);
   arrangements::EigenArrangement out;
   std::vector<ExactVec3> exact;
@@ -222,6 +286,7 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
     out = arrangements::detail::arrange_eigen(as_eigen(V), as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange",
                                               exact_output ? &exact : nullptr);
   }
+  if (round_safe) return safely_rounded_dict(std::move(out), threads);
   const auto nv = static_cast<std::size_t>(out.V.rows());
   std::vector<double> v(3 * nv);
   std::vector<std::uint8_t> flags(nv);
@@ -237,7 +302,7 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
 // The exact path: V as 3 #V hexadecimal "n/d" strings, row after row. The dict of arrange
 // plus V_exact; V is V_exact rounded to the nearest double (ties to even).
 nb::dict arrange_exact(const std::vector<std::string>& V, const Indices& F, std::optional<Labels> labels,
-                       const std::string& classifier, int threads) {
+                       const std::string& classifier, int threads, bool round_safe) {
   const arrangements::ArrangeOptions options = arrange_options(classifier, threads);
   if (V.size() % 3 != 0)
     throw std::invalid_argument("tritri.arrange: V must hold 3 coordinates per vertex, got " +
@@ -253,6 +318,10 @@ nb::dict arrange_exact(const std::vector<std::string>& V, const Indices& F, std:
       Ve(static_cast<Eigen::Index>(i / 3), static_cast<Eigen::Index>(i % 3)) = parse_hex_rational(V[i], i);
     const std::optional<LabelVector> Le = label_vector(labels);
     out = arrangements::detail::arrange_eigen_exact(Ve, as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange");
+  }
+  if (round_safe) return safely_rounded_dict(std::move(out), threads);
+  {
+    nb::gil_scoped_release release;
     const auto nv = static_cast<std::size_t>(out.V.rows());
     exact.resize(nv);
     rounded.resize(3 * nv);
@@ -357,7 +426,7 @@ NB_MODULE(_tritri, m) {
   // The stats keys with their meanings, as text (for the docstring of tritri.arrange).
   m.def("_stats_key_list", &arrangements::stats_key_list, nb::arg("indent"), nb::arg("column"), nb::arg("width"));
   m.def("arrange", &arrange, nb::arg("V"), nb::arg("F"), nb::arg("labels").none(), nb::arg("classifier"),
-        nb::arg("threads"), nb::arg("exact_output") = false);
+        nb::arg("threads"), nb::arg("exact_output") = false, nb::arg("round_safe") = false);
   m.def("arrange_exact", &arrange_exact, nb::arg("V"), nb::arg("F"), nb::arg("labels").none(), nb::arg("classifier"),
-        nb::arg("threads"));
+        nb::arg("threads"), nb::arg("round_safe") = false);
 }

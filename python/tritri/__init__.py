@@ -289,7 +289,7 @@ def intersections(V1, F1, V2, F2):
                           _vertices(V2, "V2", f), _faces(F2, "F2", f))
 
 
-def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None):
+def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None, rounding="nearest"):
     """The mesh arrangement: cuts the triangles along all their intersections, exactly.
 
     V: n x 3 coordinates, float64 or exact (Python ints, fractions.Fraction, floats, in
@@ -299,7 +299,12 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None
     classifier: "tritri" or "native"; threads: worker threads, an integer from 0 (all
     cores, the default) to MAX_THREADS (1024), as `arrange --threads`; exact_output: True
     adds V_exact, False leaves it out, None (default) adds it when V is exact input (holds
-    a Fraction or a value that is not exactly a float64).
+    a Fraction or a value that is not exactly a float64); rounding: "nearest" (default:
+    V is the arrangement rounded to the nearest doubles, which may self-intersect where
+    V_is_exact is False) or "safe" (as `arrange --round safe`, arrangements/round_mesh.h:
+    the result describes a float64 mesh that is an arrangement itself, rounded, arranged
+    again and rounded until nothing changes; V_is_exact is then all True, there is no
+    V_exact, and stats gives round_passes and round_max_move).
     Every value of V is converted exactly. When all of them are float64 values, the double
     pipeline runs (new points implicit; with float64 input exactly what earlier versions
     returned); when some value is not, the exact pipeline runs (every point a rational,
@@ -322,12 +327,14 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None
                   values of `arrange --stats`, in this order (t_load_s is 0 here, nothing
                   is read from a file):
 {stats_keys}
-    Raises ValueError for refused input (see the module's documentation): a threads value
+    Raises RuntimeError when rounding="safe" does not converge (see round_mesh.h; the
+    exact output is always available), and ValueError for refused input (see the module's
+    documentation): an unknown rounding, exact_output=True with rounding="safe", a threads value
     outside 0..MAX_THREADS, an unknown classifier, an index or label out of range, NaN or
     infinite coordinates, a coordinate beyond the float64 range (also exact ones: |x| >
     the largest float64), nothing left to arrange; ArgumentTypeError (also a ValueError)
-    for threads that is not an integer (bool, float, str, None), a classifier that is not
-    a str, exact_output that is not None or a bool, arrays of the wrong dtype, or V
+    for threads that is not an integer (bool, float, str, None), a classifier or rounding
+    that is not a str, exact_output that is not None or a bool, arrays of the wrong dtype, or V
     entries that are not real numbers.
     """
     f = "arrange"
@@ -337,6 +344,14 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None
     if not isinstance(classifier, str):
         raise ArgumentTypeError(f"tritri.arrange: classifier must be 'tritri' or 'native', "
                                 f"got {_describe(classifier)}")
+    if not isinstance(rounding, str):
+        raise ArgumentTypeError(f"tritri.arrange: rounding must be 'nearest' or 'safe', got {_describe(rounding)}")
+    if rounding not in ("nearest", "safe"):
+        raise ValueError(f"tritri.arrange: rounding must be 'nearest' or 'safe', got {rounding!r}")
+    safe = rounding == "safe"
+    if safe and exact_output:
+        raise ValueError("tritri.arrange: exact_output=True and rounding='safe' exclude each other "
+                         "(the safely rounded mesh is float64)")
     threads = _thread_count(threads)
     Fa = _faces(F, "F", f)
     la = None
@@ -354,9 +369,9 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None
     Va, exact_input = _arrange_vertices(V)
     want_exact = exact_input if exact_output is None else bool(exact_output)
     if isinstance(Va, list):
-        out = _arrange_exact(Va, Fa, la, classifier, threads)
+        out = _arrange_exact(Va, Fa, la, classifier, threads, safe)
     else:
-        out = _arrange(Va, Fa, la, classifier, threads, want_exact)
+        out = _arrange(Va, Fa, la, classifier, threads, want_exact and not safe, safe)
     if "V_exact" in out:
         exact = out.pop("V_exact")
         if want_exact:

@@ -1,0 +1,107 @@
+"""Safe rounding through the Python module (issue 14; arrangements/round_mesh.h):
+tritri.arrange(..., rounding="safe") returns a float64 mesh that is itself an arrangement.
+
+- two copies of a UV sphere, the second turned by pi about the z axis (two layers about
+  1e-16 apart, since sin(pi) is not 0 in float64, crossing everywhere):
+  rounded to nearest, the mesh arranged again has intersecting pairs (so the test can tell
+  the two apart); rounded safely, arranging it again finds nothing (no new point, no
+  intersecting pair, nothing merged or removed, the same triangles), every row of V is
+  exact, sources are those of the exact arrangement (the two layers merge into one with
+  both labels), stats report the
+  passes and a displacement bound;
+- exact input (Fractions) takes the exact path and rounds safely the same way;
+- refusals: an unknown rounding (ValueError), a rounding that is not a str
+  (ArgumentTypeError), exact_output=True with rounding="safe" (ValueError).
+Run: scripts/test_python.sh.
+"""
+
+import math
+from fractions import Fraction as Fr
+
+import numpy as np
+import pytest
+
+import tritri
+
+
+def uv_sphere(centre, radius, rings, segments):
+    V = [(centre[0], centre[1], centre[2] + radius)]
+    for i in range(1, rings):
+        t = math.pi * i / rings
+        for j in range(segments):
+            p = 2 * math.pi * j / segments
+            V.append((centre[0] + radius * math.sin(t) * math.cos(p),
+                      centre[1] + radius * math.sin(t) * math.sin(p), centre[2] + radius * math.cos(t)))
+    V.append((centre[0], centre[1], centre[2] - radius))
+    F = [(0, 1 + j, 1 + (j + 1) % segments) for j in range(segments)]
+    for i in range(rings - 2):
+        for j in range(segments):
+            a, b = 1 + i * segments + j, 1 + i * segments + (j + 1) % segments
+            F += [(a, a + segments, b + segments), (a, b + segments, b)]
+    last = len(V) - 1
+    base = 1 + (rings - 2) * segments
+    F += [(last, base + (j + 1) % segments, base + j) for j in range(segments)]
+    return np.array(V), np.array(F, dtype=np.int64)
+
+
+def rotated_copies(V, F, k, centre):
+    Vs, Fs = [], []
+    for i in range(k):
+        a = 2 * math.pi * i / k
+        c, s = math.cos(a), math.sin(a)
+        x, y = V[:, 0] - centre[0], V[:, 1] - centre[1]
+        Vs.append(np.column_stack([centre[0] + c * x - s * y, centre[1] + s * x + c * y, V[:, 2]]))
+        Fs.append(F + i * len(V))
+    return np.vstack(Vs), np.vstack(Fs)
+
+
+@pytest.fixture(scope="module")
+def copies():
+    V, F = uv_sphere((0.1, 0.2, 0.3), 1.0, 10, 20)
+    return rotated_copies(V, F, 2, (0.1, 0.2, 0.3))
+
+
+def assert_is_arrangement(out):
+    again = tritri.arrange(out["V"], out["F"])["stats"]
+    assert again["lpi"] == 0 and again["tpi"] == 0 and again["intersecting_pairs"] == 0
+    assert again["merged_vertices"] == again["removed_degenerate"] == again["removed_duplicate"] == 0
+    assert again["out_triangles"] == len(out["F"])
+
+
+def test_safe_rounding_is_an_arrangement_and_nearest_is_not(copies):
+    V, F = copies
+    labels = np.repeat(np.arange(2), len(F) // 2)
+    near = tritri.arrange(V, F, labels)
+    assert not near["V_is_exact"].all()
+    assert tritri.arrange(near["V"], near["F"])["stats"]["intersecting_pairs"] > 0
+    safe = tritri.arrange(V, F, labels, rounding="safe")
+    assert_is_arrangement(safe)
+    assert safe["V"].dtype == np.float64 and safe["V_is_exact"].all() and "V_exact" not in safe
+    s = safe["stats"]
+    assert s["round_passes"] > 1 and 0 < s["round_max_move_rel"] < 1e-6
+    assert near["stats"]["round_passes"] == 0
+    # Sources of the exact arrangement; layers merged by rounding carry the union of labels.
+    exact_sources = set(near["source"].tolist())
+    assert set(safe["source"].tolist()) <= exact_sources
+    for ls in safe["label_set"]:
+        assert set(safe["label_sets"][ls]) <= {0, 1}
+
+
+def test_exact_input_rounds_safely():
+    # Two triangles of thirds crossing, plus a sliver of sevenths through both.
+    T, S = Fr(1, 3), Fr(1, 7)
+    V = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [T, T, -1], [T, T, 1], [T, -1, T], [S, 0, -S], [S, 1, S], [2 * S, T, 0]]
+    F = [[0, 1, 2], [3, 4, 5], [6, 7, 8]]
+    out = tritri.arrange(np.array(V, dtype=object), np.array(F), rounding="safe")
+    assert_is_arrangement(out)
+    assert out["stats"]["lpi"] > 0 and out["stats"]["round_passes"] >= 1
+
+
+def test_bad_rounding_is_refused(copies):
+    V, F = copies
+    with pytest.raises(ValueError):
+        tritri.arrange(V, F, rounding="magic")
+    with pytest.raises(tritri.ArgumentTypeError):
+        tritri.arrange(V, F, rounding=1)
+    with pytest.raises(ValueError):
+        tritri.arrange(V, F, rounding="safe", exact_output=True)
