@@ -26,7 +26,7 @@ echo "pip install took $((SECONDS - start)) s"
 # Run outside the checkout so that `import tritri` can only mean the installed package.
 cd "$ROOT/build-python"
 export PYTHONDONTWRITEBYTECODE=1
-echo "=== pytest tests/python/test_bindings.py tests/python/test_exact_io.py"
+echo "=== pytest tests/python/test_bindings.py tests/python/test_exact_io.py tests/python/test_round_safe.py"
 "$VENV/bin/python" -m pytest -q -p no:cacheprovider "$ROOT/tests/python/test_bindings.py" \
   "$ROOT/tests/python/test_exact_io.py" "$ROOT/tests/python/test_round_safe.py"
 echo "=== examples/python/arrange_example.py"

@@ -41,8 +41,9 @@
 //   intersections, MCUT and EMBER pairs, rotated copies) is given in the tests' output.
 //   Known failures (RoundingError): surfaces that nearly coincide over whole faces,
 //   triangulated differently (three copies of a sphere rotated by 2 pi / 3, whose vertices
-//   coincide to 1e-16; the EMBER pair 1063852 + 72214): at every level the rounded layers
-//   cross again in as many places. The exact output (--exact) is always available.
+//   coincide to 1e-16; the EMBER pairs of the shared data, whose operands share faces up
+//   to the rounding of their transforms): at every level the rounded layers cross again in
+//   as many places. The exact output (--exact) is always available.
 //   Provenance is kept: a triangle of the result lies in (the rounded image of) the input
 //   triangle `source` names, with the union of labels of every input triangle covering it;
 //   triangles that collapsed to a segment or a point are gone (they had no area).
