@@ -136,8 +136,11 @@ RoundedMesh round_mesh(const Mesh& mesh, double h, double snap, double& max_move
       if (!std::isfinite(c))
         throw RoundingError("round: vertex " + std::to_string(v) + " rounds beyond the double range");
     if (fixed[v]) {
+      // Only a coarser grid moves a double; the rationals are needed only then.
       const Vec3 d = double_coordinates(mesh.vertices[v]);
-      move[v] = distance_bound({CGAL::Gmpq(d[0]), CGAL::Gmpq(d[1]), CGAL::Gmpq(d[2])}, position[v]);
+      move[v] = position[v] == d
+                    ? 0.0
+                    : distance_bound({CGAL::Gmpq(d[0]), CGAL::Gmpq(d[1]), CGAL::Gmpq(d[2])}, position[v]);
     } else {
       move[v] = distance_bound(exact[v], position[v]);
     }
