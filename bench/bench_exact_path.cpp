@@ -20,6 +20,7 @@
 #include <tritri/implicit_point.h>
 
 #include "arrangements/arrange.h"
+#include "arrangements/as_input.h"
 #include "arrangements/load_triangle_soup.h"
 
 namespace {
@@ -29,27 +30,6 @@ using namespace arrangements;
 [[noreturn]] void usage(int status) {
   std::fputs("usage: bench_exact_path MESH... [--runs N] [--threads N]\n", status ? stderr : stdout);
   std::exit(status);
-}
-
-ExactTriangleSoup as_exact(const TriangleSoup& s) {
-  ExactTriangleSoup e;
-  for (const Vec3& v : s.vertices) e.vertices.push_back({CGAL::Gmpq(v[0]), CGAL::Gmpq(v[1]), CGAL::Gmpq(v[2])});
-  e.triangles = s.triangles;
-  e.label_set = s.label_set;
-  e.label_sets = s.label_sets;
-  e.source = s.source;
-  e.polygon = s.polygon;
-  return e;
-}
-
-ExactTriangleSoup as_input(const OutputMesh& m) {
-  ExactTriangleSoup e;
-  for (const auto& p : m.vertices) e.vertices.push_back(tritri::to_exact(p));
-  e.triangles = m.triangles;
-  e.label_set = m.label_set;
-  e.label_sets = m.label_sets;
-  e.source = m.source;
-  return e;
 }
 
 }  // namespace
@@ -78,7 +58,7 @@ int main(int argc, char** argv) {
   for (const std::string& f : files) {
     try {
       const TriangleSoup soup = load_triangle_soup(f);
-      const ExactTriangleSoup exact = as_exact(soup);
+      const ExactTriangleSoup exact = to_exact(soup);
       double t[3] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
                      std::numeric_limits<double>::infinity()};
       ExactTriangleSoup again_input;

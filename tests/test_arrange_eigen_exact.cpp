@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "arrangements/arrange.h"
+#include "arrangements/as_input.h"
 #include "arrangements/arrange_eigen.h"
 #include "support/arrangement_scenes.h"
 #include "support/exact_soups.h"
@@ -124,7 +125,7 @@ TEST(ArrangeEigenExact, ThirdsCrossingByHand) {
 
 TEST(ArrangeEigenExact, EqualsTheExactPipelineAndTheDoubleOverloadOnGeneratedScenes) {
   for (const auto& [name, soup] : tritri_test::arrangement::generated_scenes()) {
-    const ExactTriangleSoup exact = tritri_test::exact_soup(soup);
+    const ExactTriangleSoup exact = arrangements::to_exact(soup);
     std::vector<int> labels;
     Eigen::VectorXi L(static_cast<Eigen::Index>(soup.triangles.size()));
     for (std::size_t t = 0; t < soup.triangles.size(); ++t) {

@@ -43,6 +43,7 @@
 #include <tritri/implicit_point.h>
 
 #include "arrangements/arrange.h"
+#include "arrangements/as_input.h"
 #include "arrangements/check_arrangement.h"
 #include "arrangements/load_triangle_soup.h"
 #include "support/arrangement_scenes.h"
@@ -55,7 +56,7 @@ namespace {
 
 using namespace arrangements;
 using CGAL::Gmpq;
-using tritri_test::as_soup;
+using arrangements::as_input;
 using tritri_test::sorted_vertices;
 
 // An operand: every triangle labelled {label}, sources numbered from the operand's first
@@ -74,7 +75,7 @@ Operand operand(ExactTriangleSoup s, bool doubles, std::uint32_t label, std::int
   return {std::move(s), doubles};
 }
 Operand operand(const TriangleSoup& s, std::uint32_t label, std::int64_t first_source) {
-  return operand(tritri_test::exact_soup(s), true, label, first_source);
+  return operand(arrangements::to_exact(s), true, label, first_source);
 }
 
 // The parts in order, vertex indices shifted; each triangle keeps its label set and source.
@@ -131,7 +132,7 @@ void check_triple(const std::string& what, const Operand& a, const Operand& b, c
   for (const Grouping& g : {Grouping{"(A u B) u C", &a, &b, &c}, Grouping{"A u (B u C)", &b, &c, &a}}) {
     SCOPED_TRACE(g.name);
     const Arranged r1 = arrange_any(join({&g.first->soup, &g.second->soup}), g.first->doubles && g.second->doubles);
-    const ExactTriangleSoup s1 = as_soup(r1.mesh);
+    const ExactTriangleSoup s1 = as_input(r1.mesh);
     const ExactArrangeResult r2 = arrange(join({&s1, &g.last->soup}), ArrangeOptions{});
     // (i)
     EXPECT_EQ(r2.stats.euler, one.stats.euler);
@@ -149,7 +150,7 @@ void check_triple(const std::string& what, const Operand& a, const Operand& b, c
     EXPECT_TRUE(check.ok()) << check.violations << " violations, " << check.degenerate_triangles << " degenerate"
                             << (check.examples.empty() ? "" : ": " + check.examples.front());
     // (iv)
-    const ExactArrangeResult again = arrange(as_soup(r2.mesh), ArrangeOptions{});
+    const ExactArrangeResult again = arrange(as_input(r2.mesh), ArrangeOptions{});
     EXPECT_EQ(again.stats.intersection_points, 0u);
     EXPECT_EQ(again.stats.tpi, 0u);
     EXPECT_EQ(again.stats.out_triangles, r2.stats.out_triangles);
@@ -163,7 +164,7 @@ void check_pair_then_third(const std::string& what, const Operand& ab, const Ope
   const Arranged one = arrange_any(join({&ab.soup, &c.soup}), ab.doubles && c.doubles);
   const std::vector<ExactVec3> all = unique_sorted_vertices(one.mesh);
   const Arranged r1 = arrange_any(ab.soup, ab.doubles);
-  const ExactTriangleSoup s1 = as_soup(r1.mesh);
+  const ExactTriangleSoup s1 = as_input(r1.mesh);
   const ExactArrangeResult r2 = arrange(join({&s1, &c.soup}), ArrangeOptions{});
   EXPECT_EQ(r2.stats.euler, one.stats.euler);
   const std::vector<ExactVec3> refined = unique_sorted_vertices(r2.mesh);
@@ -171,7 +172,7 @@ void check_pair_then_third(const std::string& what, const Operand& ab, const Ope
   std::set_difference(all.begin(), all.end(), refined.begin(), refined.end(), std::back_inserter(missing));
   EXPECT_TRUE(missing.empty()) << missing.size() << " of " << all.size() << " one-shot vertices missing";
   EXPECT_GT(r2.stats.intersection_points, 0u) << "C crosses nothing: the test tells nothing";
-  const ExactArrangeResult again = arrange(as_soup(r2.mesh), ArrangeOptions{});
+  const ExactArrangeResult again = arrange(as_input(r2.mesh), ArrangeOptions{});
   EXPECT_EQ(again.stats.intersection_points, 0u);
   EXPECT_EQ(again.stats.tpi, 0u);
   EXPECT_EQ(again.stats.out_triangles, r2.stats.out_triangles);
@@ -229,7 +230,7 @@ TEST(Associativity, GeneratedTriples) {
 // The rational operand (exact path) on generated meshes too: the third sphere moved by 1/3.
 TEST(Associativity, GeneratedTripleWithARationalOperand) {
   const TriangleSoup a = uv_sphere({0, 0, 0}, 1.0, 8, 12), b = uv_sphere({1, 0.05, 0.02}, 0.95, 7, 11);
-  ExactTriangleSoup c = tritri_test::exact_soup(uv_sphere({0.45, 0.85, -0.03}, 1.05, 9, 10));
+  ExactTriangleSoup c = arrangements::to_exact(uv_sphere({0.45, 0.85, -0.03}, 1.05, 9, 10));
   for (ExactVec3& v : c.vertices) v[0] += Gmpq(1, 3);
   const std::int64_t na = static_cast<std::int64_t>(a.triangles.size()), nb = static_cast<std::int64_t>(b.triangles.size());
   check_triple("three spheres, the third moved by 1/3", operand(a, 0, 0), operand(b, 1, na),
@@ -261,7 +262,7 @@ Frame frame(const std::vector<const TriangleSoup*>& soups) {
 
 // s rotated about `centre` by Rx(5/13, 12/13) Rz(3/5, 4/5), then moved by (d/70, d/110, d/130).
 ExactTriangleSoup rotated_rational(const TriangleSoup& s, const Vec3& centre, double d) {
-  ExactTriangleSoup e = tritri_test::exact_soup(s);
+  ExactTriangleSoup e = arrangements::to_exact(s);
   const ExactVec3 c{Gmpq(centre[0]), Gmpq(centre[1]), Gmpq(centre[2])};
   const Gmpq cz(3, 5), sz(4, 5), cx(5, 13), sx(12, 13), D(d);
   for (ExactVec3& v : e.vertices) {

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "arrangements/arrange.h"
+#include "arrangements/as_input.h"
 #include "arrangements/check_arrangement.h"
 #include "support/arrangement_scenes.h"
 #include "support/exact_soups.h"
@@ -33,7 +34,7 @@ void expect_same_arrangement(const ArrangeStats& a, const ArrangeStats& b, const
 }
 
 void expect_idempotent(const ExactOutputMesh& mesh, const ArrangeStats& first, const std::string& what) {
-  const ExactArrangeResult again = arrange(as_soup(mesh), ArrangeOptions{});
+  const ExactArrangeResult again = arrange(as_input(mesh), ArrangeOptions{});
   EXPECT_EQ(again.stats.intersection_points, 0u) << what;
   EXPECT_EQ(again.stats.tpi, 0u) << what;
   EXPECT_EQ(again.stats.out_vertices, first.out_vertices) << what;
@@ -58,7 +59,7 @@ TEST(ExactPath, AgreesWithTheDoublePathOnGeneratedScenes) {
                                          {" + 2^30", offset(soup, std::ldexp(1.0, 30))}}) {
       const std::string what = name + variant;
       const ArrangeResult d = arrange(input, ArrangeOptions{});
-      const ExactArrangeResult e = arrange(exact_soup(input), ArrangeOptions{});
+      const ExactArrangeResult e = arrange(to_exact(input), ArrangeOptions{});
       expect_same_arrangement(d.stats, e.stats, what);
       EXPECT_EQ(sorted_vertices(exact_mesh(d.mesh)), sorted_vertices(e.mesh)) << what;
       EXPECT_TRUE(check_arrangement(e.mesh).ok()) << what;
@@ -70,7 +71,7 @@ TEST(ExactPath, ArrangingAnArrangementAgainFindsNothingNew) {
   for (const auto& [name, soup] : generated_scenes()) {
     const ArrangeResult d = arrange(soup, ArrangeOptions{});
     expect_idempotent(exact_mesh(d.mesh), d.stats, name + " (double path's result)");
-    const ExactArrangeResult e = arrange(exact_soup(soup), ArrangeOptions{});
+    const ExactArrangeResult e = arrange(to_exact(soup), ArrangeOptions{});
     expect_idempotent(e.mesh, e.stats, name + " (exact path's result)");
   }
 }
@@ -81,8 +82,8 @@ TEST(ExactPath, ThreadsAndClassifiersAgree) {
   one.threads = 1;
   ArrangeOptions native;
   native.classifier = Classifier::Native;
-  const ExactArrangeResult a = arrange(exact_soup(soup), one);
-  const ExactArrangeResult b = arrange(exact_soup(soup), native);
+  const ExactArrangeResult a = arrange(to_exact(soup), one);
+  const ExactArrangeResult b = arrange(to_exact(soup), native);
   expect_same_arrangement(a.stats, b.stats, "native vs tritri, 1 vs all threads");
   EXPECT_EQ(a.mesh.vertices, b.mesh.vertices);  // same classifier output: same numbering
   EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);

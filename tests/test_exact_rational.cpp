@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "arrangements/arrange.h"
+#include "arrangements/as_input.h"
 #include "arrangements/check_arrangement.h"
 #include "arrangements/load_triangle_soup.h"
 #include "support/exact_soups.h"
@@ -324,7 +325,7 @@ void check_against_reference(const Scene& scene) {
     }
   }
   // (e)
-  const ExactArrangeResult again = arrange(tritri_test::as_soup(m), ArrangeOptions{});
+  const ExactArrangeResult again = arrange(arrangements::as_input(m), ArrangeOptions{});
   EXPECT_EQ(again.stats.intersection_points, 0u);
   EXPECT_EQ(again.stats.tpi, 0u);
   EXPECT_EQ(again.stats.out_triangles, r.stats.out_triangles);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "arrangements/arrange.h"
+#include "arrangements/as_input.h"
 #include "arrangements/check_arrangement.h"
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/write_mesh.h"
@@ -47,7 +48,7 @@ TEST(Iterate, ArrangingAnExactArrangementAgainFindsNothingNew) {
     const ExactTriangleSoup* exact = std::get_if<ExactTriangleSoup>(&loaded);
     ExactTriangleSoup converted;
     if (!exact) {  // no new point, or all of them doubles: the file holds doubles only
-      converted = tritri_test::exact_soup(std::get<TriangleSoup>(loaded));
+      converted = arrangements::to_exact(std::get<TriangleSoup>(loaded));
       exact = &converted;
     }
     const ExactArrangeResult again = arrange(*exact, ArrangeOptions{});

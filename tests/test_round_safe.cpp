@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "arrangements/arrange.h"
+#include "arrangements/as_input.h"
 #include "arrangements/check_arrangement.h"
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/round_mesh.h"
@@ -67,7 +68,7 @@ RoundReport expect_safe_rounding(const Mesh& exact, const std::string& name, boo
   const ArrangementCheck c = check_arrangement(r);
   EXPECT_TRUE(c.ok()) << name << ": " << (c.examples.empty() ? "" : c.examples.front());
 
-  const ArrangeResult again = arrange(tritri_test::as_soup(r), ArrangeOptions{});
+  const ArrangeResult again = arrange(arrangements::as_input(r), ArrangeOptions{});
   const ArrangeStats& s = again.stats;
   EXPECT_EQ(s.intersection_points, 0u) << name;
   EXPECT_EQ(s.tpi, 0u) << name;
@@ -191,9 +192,9 @@ TEST(RoundSafe, RationalScenesOnTheExactPath) {
   // every vertex and every new point rational, none a double.
   auto q = [](long n, long d) { return CGAL::Gmpq(n, d); };
   for (int tilt : {1, 3, 7}) {
-    ExactTriangleSoup s = tritri_test::exact_soup(grid(4, 1.0, 0.0));
+    ExactTriangleSoup s = arrangements::to_exact(grid(4, 1.0, 0.0));
     for (auto& v : s.vertices) v[2] = q(1, 3);
-    ExactTriangleSoup t = tritri_test::exact_soup(grid(4, 1.0, 0.0));
+    ExactTriangleSoup t = arrangements::to_exact(grid(4, 1.0, 0.0));
     for (auto& v : t.vertices) {
       // x' = x/7 + 1/11, z' = x * tilt / 7 - 1/5 (a plane through the first grid)
       const CGAL::Gmpq x = v[0];

@@ -13,6 +13,7 @@
 #include <tritri/implicit_point.h>
 
 #include "arrangements/arrange.h"
+#include "arrangements/as_input.h"
 
 namespace arrangements {
 namespace {
@@ -214,13 +215,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     const std::size_t level_triangles = rounded.triangles.size();
     for (int pass = 1; pass <= kPassesPerLevel; ++pass) {
       ++r.passes;
-      TriangleSoup soup;
-      soup.vertices = rounded.vertices;
-      soup.triangles = rounded.triangles;
-      soup.label_set = rounded.label_set;
-      soup.label_sets = rounded.label_sets;
-      soup.source = rounded.source;
-      ArrangeResult again = arrange(soup, arrange_options);
+      ArrangeResult again = arrange(as_input(rounded), arrange_options);
       if (unchanged(again.stats)) {
         r.max_move = level_move;
         r.grid = h;

@@ -4,6 +4,8 @@
 // SoupBuilder (soup_builder.cpp) in the same pass.
 #include "arrangements/load_triangle_soup.h"
 
+#include "arrangements/as_input.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -140,21 +142,6 @@ AnyTriangleSoup load_file(const std::string& path, std::uint32_t label, bool exa
   return soup_of(std::move(builder.vertices), builder, label);
 }
 
-ExactVec3 exactly(const Vec3& v) { return {CGAL::Gmpq(v[0]), CGAL::Gmpq(v[1]), CGAL::Gmpq(v[2])}; }
-
-ExactTriangleSoup exactly(TriangleSoup&& soup) {
-  ExactTriangleSoup out;
-  out.vertices.reserve(soup.vertices.size());
-  for (const Vec3& v : soup.vertices) out.vertices.push_back(exactly(v));
-  std::vector<Vec3>().swap(soup.vertices);
-  out.triangles = std::move(soup.triangles);
-  out.label_set = std::move(soup.label_set);
-  out.label_sets = std::move(soup.label_sets);
-  out.source = std::move(soup.source);
-  out.polygon = std::move(soup.polygon);
-  return out;
-}
-
 // Appends file i (`one`, loaded with label i) to `all`: vertex indices, `source` and
 // `polygon` offset; one's coordinates converted exactly when all's are rationals.
 template <class Coordinates, class OneCoordinates>
@@ -171,7 +158,7 @@ void append(BasicTriangleSoup<Coordinates>& all, BasicTriangleSoup<OneCoordinate
     all.vertices.insert(all.vertices.end(), std::make_move_iterator(one.vertices.begin()),
                         std::make_move_iterator(one.vertices.end()));
   } else {
-    for (const Vec3& v : one.vertices) all.vertices.push_back(exactly(v));
+    for (const Vec3& v : one.vertices) all.vertices.push_back(to_exact(v));
   }
   if (!one.polygon.empty() || !all.polygon.empty()) {  // ids are source indices: offset them too
     all.polygon.resize(all.triangles.size(), -1);
@@ -198,7 +185,7 @@ AnyTriangleSoup load_files(const std::vector<std::string>& paths, bool exact) {
       continue;
     }
     if (std::holds_alternative<ExactTriangleSoup>(one) && std::holds_alternative<TriangleSoup>(all))
-      all = exactly(std::move(std::get<TriangleSoup>(all)));
+      all = to_exact(std::move(std::get<TriangleSoup>(all)));
     if (ExactTriangleSoup* exact_all = std::get_if<ExactTriangleSoup>(&all))
       std::visit([&](auto& o) { append(*exact_all, std::move(o), i, paths[i]); }, one);
     else  // both doubles
