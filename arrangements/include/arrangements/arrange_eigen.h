@@ -150,23 +150,7 @@ ExactTriangleSoup exact_eigen_soup(const Eigen::MatrixBase<DV>& V, const Eigen::
                                    const Eigen::MatrixBase<DL>* labels, const std::string& where) {
   static_assert(std::is_same_v<typename DV::Scalar, CGAL::Gmpq>, "V must hold CGAL::Gmpq coordinates");
   ExactTriangleSoup soup;
-  if (V.size() != 0) {
-    if (V.cols() != 3)
-      throw std::invalid_argument(where + ": V must have 3 columns (x, y, z), got " + std::to_string(V.cols()));
-    if (V.rows() > INT_MAX)  // triangles index vertices with int
-      throw std::invalid_argument(where + ": V has more than " + std::to_string(INT_MAX) + " rows");
-    const CGAL::Gmpq largest(DBL_MAX);  // exactly: a double is a rational
-    soup.vertices.resize(static_cast<std::size_t>(V.rows()));
-    for (Eigen::Index r = 0; r < V.rows(); ++r)
-      for (Eigen::Index c = 0; c < 3; ++c) {
-        const CGAL::Gmpq& x = V(r, c);
-        if (x > largest || x < -largest)
-          throw std::invalid_argument(where + ": V(" + std::to_string(r) + ", " + std::to_string(c) +
-                                      ") is beyond the largest finite double (the pipeline needs finite "
-                                      "bounding boxes)");
-        soup.vertices[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = x;
-      }
-  }
+  soup.vertices = tritri::detail::checked_rational_vertices(V, where + ": V");
   soup.triangles = tritri::detail::checked_triangles(F, soup.vertices.size(), where + ": F");
   set_eigen_labels(soup, labels, where);
   return soup;

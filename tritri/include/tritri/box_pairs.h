@@ -239,13 +239,24 @@ void for_each_overlapping_pair(std::span<const std::array<double, 3>> V, std::sp
   for_each_overlapping_pair(V, V, F, threads, group, visit);
 }
 
-inline std::vector<std::pair<int, int>> overlapping_triangle_pairs(std::span<const std::array<double, 3>> V,
+// The same with a box per vertex (Vlo, Vhi: lower and upper bounds of each coordinate, e.g.
+// of a rational one).
+inline std::vector<std::pair<int, int>> overlapping_triangle_pairs(std::span<const std::array<double, 3>> Vlo,
+                                                                   std::span<const std::array<double, 3>> Vhi,
                                                                    std::span<const std::array<int, 3>> F,
                                                                    int threads = 0,
                                                                    std::span<const std::int64_t> group = {}) {
   tbb::enumerable_thread_specific<detail::box_pairs::Pairs> found;  // visit runs on several threads
-  for_each_overlapping_pair(V, F, threads, group, [&found](int i, int j) { found.local().emplace_back(i, j); });
+  for_each_overlapping_pair(Vlo, Vhi, F, threads, group,
+                            [&found](int i, int j) { found.local().emplace_back(i, j); });
   return detail::box_pairs::sorted_unique(found);
+}
+
+inline std::vector<std::pair<int, int>> overlapping_triangle_pairs(std::span<const std::array<double, 3>> V,
+                                                                   std::span<const std::array<int, 3>> F,
+                                                                   int threads = 0,
+                                                                   std::span<const std::int64_t> group = {}) {
+  return overlapping_triangle_pairs(V, V, F, threads, group);
 }
 
 }  // namespace tritri

@@ -8,16 +8,18 @@
 //     std::cout << "F1 row " << p.i << " meets F2 row " << p.j << ": " << p.result << "\n";
 //
 // Inputs:
-//   V1  #V1 by 3 matrix of vertex coordinates of mesh 1 (any Eigen dense expression with a
-//       floating-point scalar, e.g. Eigen::MatrixXd), finite
+//   V1  #V1 by 3 matrix of vertex coordinates of mesh 1: any Eigen dense expression with a
+//       floating-point scalar (e.g. Eigen::MatrixXd), finite; or with scalar CGAL::Gmpq
+//       (exact rationals, e.g. an exact arrangement's vertices), |x| <= DBL_MAX
 //   F1  #F1 by 3 matrix of triangle corners, indices into the rows of V1 (any Eigen dense
 //       expression with an integer scalar, e.g. Eigen::MatrixXi)
-//   V2, F2  mesh 2, likewise
+//   V2, F2  mesh 2, likewise (V2 with the same kind of scalar as V1)
 //   An empty matrix (size() == 0) is an empty list, whatever its shape.
 // Output:
 //   a list of tritri::IntersectingPair {i, j, result} (intersecting_pair.h), one per pair
 //   whose closed triangles have a common point: i a row of F1 (triangle A), j a row of F2
-//   (triangle B), result = tritri::classify<DoubleKernel>(A, B) with the corners in the
+//   (triangle B), result = tritri::classify<DoubleKernel>(A, B) (RationalKernel for
+//   CGAL::Gmpq coordinates, rational_kernel.h) with the corners in the
 //   order of the columns; sorted by (i, j).
 //
 // The two meshes share no vertices: every contact counts, a single common point too (a
@@ -27,11 +29,13 @@
 // triangles, neighbours and i == j included: for one mesh use self_intersections.h.
 //
 // Throws std::invalid_argument (naming the matrix, the entry and the problem) when a
-// matrix does not have 3 columns, a coordinate is NaN or infinite, an index is out of
-// range, or F1 or F2 has more than INT_MAX rows.
+// matrix does not have 3 columns, a coordinate is NaN, infinite or (rationals) beyond the
+// largest double, an index is out of range, or F1 or F2 has more than INT_MAX rows.
 //
-// Exactness: every decision is an exact predicate on the input doubles (DoubleKernel); the
-// bounding boxes are exact and closed, so no intersecting pair is missed. No tolerance.
+// Exactness: every decision is an exact predicate on the input coordinates (doubles:
+// DoubleKernel; rationals: RationalKernel, filtered); the bounding boxes are exact and
+// closed (rationals: an interval of doubles around each coordinate), so no intersecting
+// pair is missed. No tolerance.
 // Determinism: the output does not depend on the number of threads.
 // Complexity: candidates by CGAL's box_self_intersection_d on the n = #F1 + #F2 boxes of
 // both meshes, keeping the pairs across them (O(n log^3 n + k) for k overlapping boxes,
@@ -44,6 +48,8 @@
 
 #include <Eigen/Core>
 
+#include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -58,17 +64,27 @@ std::vector<IntersectingPair> intersections(const Eigen::MatrixBase<DerivedV1>& 
                                             const Eigen::MatrixBase<DerivedF1>& F1,
                                             const Eigen::MatrixBase<DerivedV2>& V2,
                                             const Eigen::MatrixBase<DerivedF2>& F2) {
-  const std::vector<detail::MeshPoint> points1 = detail::checked_vertices(V1, "tritri::intersections: V1");
+  using Kernel = detail::MeshKernel<typename DerivedV1::Scalar>;
+  static_assert(std::is_same_v<Kernel, detail::MeshKernel<typename DerivedV2::Scalar>>,
+                "V1 and V2 must hold the same kind of coordinates: floating point, or CGAL::Gmpq");
+  using Point = typename Kernel::Point;
+  const detail::MeshVertices<Kernel> points1 = detail::mesh_vertices(V1, "tritri::intersections: V1");
   const std::vector<detail::MeshTriangle> tris1 =
       detail::checked_triangles(F1, points1.size(), "tritri::intersections: F1");
-  const std::vector<detail::MeshPoint> points2 = detail::checked_vertices(V2, "tritri::intersections: V2");
+  const detail::MeshVertices<Kernel> points2 = detail::mesh_vertices(V2, "tritri::intersections: V2");
   const std::vector<detail::MeshTriangle> tris2 =
       detail::checked_triangles(F2, points2.size(), "tritri::intersections: F2");
 
   // One search over both meshes, each mesh one group (so pairs within a mesh are never
   // enumerated): triangle ids below #F1 are mesh 1, the rest mesh 2.
-  std::vector<detail::MeshPoint> points(points1);
-  points.insert(points.end(), points2.begin(), points2.end());
+  constexpr bool doubles = std::is_same_v<Kernel, DoubleKernel>;
+  auto joined = [](std::span<const detail::MeshPoint> a, std::span<const detail::MeshPoint> b) {
+    std::vector<detail::MeshPoint> out(a.begin(), a.end());
+    out.insert(out.end(), b.begin(), b.end());
+    return out;
+  };
+  std::vector<detail::MeshPoint> lo = joined(points1.lower(), points2.lower());
+  std::vector<detail::MeshPoint> hi = doubles ? std::vector<detail::MeshPoint>{} : joined(points1.upper(), points2.upper());
   std::vector<detail::MeshTriangle> tris(tris1);
   const int offset = static_cast<int>(points1.size());
   for (detail::MeshTriangle t : tris2) tris.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
@@ -76,17 +92,19 @@ std::vector<IntersectingPair> intersections(const Eigen::MatrixBase<DerivedV1>& 
   group.resize(tris.size(), 1);
   const int n1 = static_cast<int>(tris1.size());
   std::vector<std::pair<int, int>> pairs;
-  for (const auto& [a, b] : overlapping_triangle_pairs(points, tris, 0, group)) pairs.emplace_back(a, b - n1);
-  points = {};
+  for (const auto& [a, b] : overlapping_triangle_pairs(lo, doubles ? lo : hi, tris, 0, group))
+    pairs.emplace_back(a, b - n1);
+  lo = {};
+  hi = {};
   tris = {};
 
-  auto corners = [&](const std::pair<int, int>& p) {
-    const detail::MeshTriangle &a = tris1[p.first], &b = tris2[p.second];
-    return std::array<const detail::MeshPoint*, 6>{&points1[a[0]], &points1[a[1]], &points1[a[2]],
-                                                   &points2[b[0]], &points2[b[1]], &points2[b[2]]};
+  auto corners = [&](const std::pair<int, int>& pair) {
+    const detail::MeshTriangle &a = tris1[pair.first], &b = tris2[pair.second];
+    const std::vector<Point>&p1 = points1.points, &p2 = points2.points;
+    return std::array<const Point*, 6>{&p1[a[0]], &p1[a[1]], &p1[a[2]], &p2[b[0]], &p2[b[1]], &p2[b[2]]};
   };
   auto intersect = [](std::size_t, const Result& r) { return r.intersects(); };
-  return detail::classify_candidates(pairs, corners, intersect);
+  return detail::classify_candidates<Kernel>(pairs, corners, intersect);
 }
 
 }  // namespace tritri

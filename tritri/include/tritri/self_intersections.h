@@ -8,14 +8,16 @@
 //     std::cout << p.i << " " << p.j << " " << p.result << "\n";
 //
 // Inputs:
-//   V  #V by 3 matrix of vertex coordinates (any Eigen dense expression with a
-//      floating-point scalar, e.g. Eigen::MatrixXd), finite
+//   V  #V by 3 matrix of vertex coordinates: any Eigen dense expression with a
+//      floating-point scalar (e.g. Eigen::MatrixXd), finite; or with scalar CGAL::Gmpq
+//      (exact rationals, e.g. an exact arrangement's vertices), |x| <= DBL_MAX
 //   F  #F by 3 matrix of triangle corners, indices into the rows of V (any Eigen dense
 //      expression with an integer scalar, e.g. Eigen::MatrixXi)
 //   An empty matrix (V.size() == 0 or F.size() == 0) is an empty list, whatever its shape.
 // Output:
 //   a list of tritri::IntersectingPair {i, j, result} (intersecting_pair.h), one per
-//   reported pair, i < j rows of F, result = tritri::classify<DoubleKernel> of rows i and j
+//   reported pair, i < j rows of F, result = tritri::classify<DoubleKernel> (RationalKernel
+//   for CGAL::Gmpq coordinates, rational_kernel.h) of rows i and j
 //   in the order of their columns; sorted by (i, j).
 //
 // Which pairs are reported. Vertices are shared by index: corner a of row i and corner b
@@ -36,12 +38,14 @@
 // degenerate and duplicated triangles before it classifies: on such a mesh both agree.
 //
 // Throws std::invalid_argument (naming the matrix, the entry and the problem) when V or F
-// does not have 3 columns, a coordinate is NaN or infinite, an index is out of range, or F
-// has more than INT_MAX rows.
+// does not have 3 columns, a coordinate is NaN, infinite or (rationals) beyond the largest
+// double, an index is out of range, or F has more than INT_MAX rows.
 //
-// Exactness: every decision is an exact predicate on the input doubles (DoubleKernel); the
-// bounding boxes are the exact minima and maxima of the corners and closed (boxes that
-// only touch are candidates), so no intersecting pair is missed. No tolerance anywhere.
+// Exactness: every decision is an exact predicate on the input coordinates (doubles:
+// DoubleKernel; rationals: RationalKernel, filtered); the bounding boxes are the exact
+// minima and maxima of the corners (rationals: of an interval of doubles around each) and
+// closed (boxes that only touch are candidates), so no intersecting pair is missed. No
+// tolerance anywhere.
 // Determinism: the output does not depend on the number of threads.
 // Complexity: O(n log^3 n + k) for the candidates (CGAL's box_self_intersection_d on n
 // triangles, k overlapping boxes, sequential), then O(k) classifications in parallel with
@@ -64,16 +68,18 @@ namespace tritri {
 template <class DerivedV, class DerivedF>
 std::vector<IntersectingPair> self_intersections(const Eigen::MatrixBase<DerivedV>& V,
                                                  const Eigen::MatrixBase<DerivedF>& F) {
-  const std::vector<detail::MeshPoint> points = detail::checked_vertices(V, "tritri::self_intersections: V");
+  using Kernel = detail::MeshKernel<typename DerivedV::Scalar>;
+  using Point = typename Kernel::Point;
+  const detail::MeshVertices<Kernel> points = detail::mesh_vertices(V, "tritri::self_intersections: V");
   const std::vector<detail::MeshTriangle> tris =
       detail::checked_triangles(F, points.size(), "tritri::self_intersections: F");
 
-  const std::vector<std::pair<int, int>> pairs = overlapping_triangle_pairs(points, tris);
+  const std::vector<std::pair<int, int>> pairs = overlapping_triangle_pairs(points.lower(), points.upper(), tris);
 
-  auto corners = [&](const std::pair<int, int>& p) {
-    const detail::MeshTriangle &a = tris[p.first], &b = tris[p.second];
-    return std::array<const detail::MeshPoint*, 6>{&points[a[0]], &points[a[1]], &points[a[2]],
-                                                   &points[b[0]], &points[b[1]], &points[b[2]]};
+  auto corners = [&](const std::pair<int, int>& pair) {
+    const detail::MeshTriangle &a = tris[pair.first], &b = tris[pair.second];
+    const std::vector<Point>& p = points.points;
+    return std::array<const Point*, 6>{&p[a[0]], &p[a[1]], &p[a[2]], &p[b[0]], &p[b[1]], &p[b[2]]};
   };
   auto beyond_shared = [&](std::size_t k, const Result& r) {
     const detail::MeshTriangle &a = tris[pairs[k].first], &b = tris[pairs[k].second];
@@ -82,7 +88,7 @@ std::vector<IntersectingPair> self_intersections(const Eigen::MatrixBase<Derived
     // Only shared vertices: the same three indices means the same triangle twice.
     return r.points.size() == 3;
   };
-  return detail::classify_candidates(pairs, corners, beyond_shared);
+  return detail::classify_candidates<Kernel>(pairs, corners, beyond_shared);
 }
 
 }  // namespace tritri

@@ -13,8 +13,8 @@
 // where a triangle is not degenerate, projection.h) and tritri::Location (where a point
 // lies in a triangle, location.h).
 //
-// CgalKernel<CK> and ImplicitKernel (LPI / TPI points) are included when CGAL's headers
-// are available.
+// CgalKernel<CK>, RationalKernel (CGAL::Gmpq coordinates) and ImplicitKernel (LPI / TPI
+// points) are included when CGAL's headers are available.
 #pragma once
 
 #include "tritri/sign.h"
@@ -31,5 +31,6 @@
 
 #if __has_include(<CGAL/Kernel/global_functions.h>)
 #include "tritri/cgal_kernel.h"
+#include "tritri/rational_kernel.h"
 #include "tritri/implicit_kernel.h"
 #endif
