@@ -24,6 +24,7 @@
 #include <tritri/classify.h>
 #include <tritri/double_kernel.h>
 #include <tritri/intersections.h>
+#include <tritri/rational_kernel.h>
 #include <tritri/result.h>
 #include <tritri/self_intersections.h>
 
@@ -135,15 +136,56 @@ nb::dict stats_dict(const arrangements::ArrangeStats& s) {
 
 // The rational written "n/d" in base 16 (n with an optional '-'; d > 0), as the package
 // writes it (base 16: linear-time conversions both ways, and no limit on the digits).
-CGAL::Gmpq parse_hex_rational(const std::string& text, std::size_t index) {
+CGAL::Gmpq parse_hex_rational(const std::string& text, const std::string& where, std::size_t index) {
   CGAL::Gmpq q;
   const bool ok = text.find('/') != std::string::npos && mpq_set_str(q.mpq(), text.c_str(), 16) == 0 &&
                   mpz_sgn(mpq_denref(q.mpq())) > 0;
   if (!ok)
-    throw std::invalid_argument("tritri.arrange: V[" + std::to_string(index / 3) + ", " + std::to_string(index % 3) +
+    throw std::invalid_argument(where + "[" + std::to_string(index / 3) + ", " + std::to_string(index % 3) +
                                 "] is not a rational written \"n/d\" in base 16");
   mpq_canonicalize(q.mpq());
   return q;
+}
+
+// 3n such strings, row after row, as an n x 3 matrix; `where` names the argument.
+using RationalRows = Eigen::Matrix<CGAL::Gmpq, Eigen::Dynamic, 3>;
+RationalRows rational_rows(const std::vector<std::string>& values, const std::string& where) {
+  if (values.size() % 3 != 0)
+    throw std::invalid_argument(where + " must hold 3 coordinates per vertex, got " + std::to_string(values.size()));
+  RationalRows V(static_cast<Eigen::Index>(values.size() / 3), 3);
+  for (std::size_t i = 0; i < values.size(); ++i)
+    V(static_cast<Eigen::Index>(i / 3), static_cast<Eigen::Index>(i % 3)) = parse_hex_rational(values[i], where, i);
+  return V;
+}
+
+// The exact entries of classify, self_intersections and intersections (RationalKernel):
+// coordinates as such strings, checked by the Python layer (shapes, |x| <= DBL_MAX).
+tritri::Result classify_exact(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+  const RationalRows A = rational_rows(a, "tritri.classify: a"), B = rational_rows(b, "tritri.classify: b");
+  if (A.rows() != 3 || B.rows() != 3)
+    throw std::invalid_argument("tritri.classify: a and b must be 3 x 3 arrays (one vertex per row)");
+  auto p = [](const RationalRows& M, Eigen::Index r) { return tritri::RationalKernel::Point(M(r, 0), M(r, 1), M(r, 2)); };
+  return tritri::classify<tritri::RationalKernel>(p(A, 0), p(A, 1), p(A, 2), p(B, 0), p(B, 1), p(B, 2));
+}
+
+nb::tuple self_intersections_exact(const std::vector<std::string>& V, const Indices& F) {
+  std::vector<tritri::IntersectingPair> found;
+  {
+    nb::gil_scoped_release release;
+    found = tritri::self_intersections(rational_rows(V, "tritri.self_intersections: V"), as_eigen(F));
+  }
+  return pairs_and_results(std::move(found));
+}
+
+nb::tuple intersections_exact(const std::vector<std::string>& V1, const Indices& F1, const std::vector<std::string>& V2,
+                              const Indices& F2) {
+  std::vector<tritri::IntersectingPair> found;
+  {
+    nb::gil_scoped_release release;
+    found = tritri::intersections(rational_rows(V1, "tritri.intersections: V1"), as_eigen(F1),
+                                  rational_rows(V2, "tritri.intersections: V2"), as_eigen(F2));
+  }
+  return pairs_and_results(std::move(found));
 }
 
 nb::object python_int(mpz_srcptr z) {
@@ -304,18 +346,13 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
 nb::dict arrange_exact(const std::vector<std::string>& V, const Indices& F, std::optional<Labels> labels,
                        const std::string& classifier, int threads, bool round_safe) {
   const arrangements::ArrangeOptions options = arrange_options(classifier, threads);
-  if (V.size() % 3 != 0)
-    throw std::invalid_argument("tritri.arrange: V must hold 3 coordinates per vertex, got " +
-                                std::to_string(V.size()));
   arrangements::ExactEigenArrangement out;
   std::vector<ExactVec3> exact;
   std::vector<double> rounded;
   std::vector<std::uint8_t> flags;
   {
     nb::gil_scoped_release release;
-    Eigen::Matrix<CGAL::Gmpq, Eigen::Dynamic, 3> Ve(static_cast<Eigen::Index>(V.size() / 3), 3);
-    for (std::size_t i = 0; i < V.size(); ++i)
-      Ve(static_cast<Eigen::Index>(i / 3), static_cast<Eigen::Index>(i % 3)) = parse_hex_rational(V[i], i);
+    const RationalRows Ve = rational_rows(V, "tritri.arrange: V");
     const std::optional<LabelVector> Le = label_vector(labels);
     out = arrangements::detail::arrange_eigen_exact(Ve, as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange");
   }
@@ -422,6 +459,9 @@ NB_MODULE(_tritri, m) {
   m.def("classify", &classify, nb::arg("a"), nb::arg("b"));
   m.def("self_intersections", &self_intersections, nb::arg("V"), nb::arg("F"));
   m.def("intersections", &intersections, nb::arg("V1"), nb::arg("F1"), nb::arg("V2"), nb::arg("F2"));
+  m.def("classify_exact", &classify_exact, nb::arg("a"), nb::arg("b"));
+  m.def("self_intersections_exact", &self_intersections_exact, nb::arg("V"), nb::arg("F"));
+  m.def("intersections_exact", &intersections_exact, nb::arg("V1"), nb::arg("F1"), nb::arg("V2"), nb::arg("F2"));
   m.def("load_mesh", &load_mesh, nb::arg("path"));
   // The stats keys with their meanings, as text (for the docstring of tritri.arrange).
   m.def("_stats_key_list", &arrangements::stats_key_list, nb::arg("indent"), nb::arg("column"), nb::arg("width"));

@@ -30,8 +30,11 @@ and accepted as they are by sympy, gmpy2 and the statistics module. Vertices in 
     converted exactly); when some value is not exactly a float64 the exact pipeline runs
     (every point a rational), else the usual double pipeline. The result's "V_exact" holds
     the exact output vertices, for exact input or with exact_output=True.
-  - classify, self_intersections and intersections work on float64 (values converted by
-    float(), as before).
+  - classify, self_intersections and intersections take them too: when some coordinate
+    is not exactly a float64 they classify exactly on the rationals (tritri::RationalKernel,
+    CGAL's filtered predicates on GMP rationals), so a contact that only exists exactly (a
+    vertex at 1/3 on a plane) is found; else the float64 path, as before. Their results
+    name points by (type, id0, id1), the same on both paths.
 
 Errors: every refused argument raises ValueError with a message naming the argument and
 the entry: wrong shape, NaN or infinite coordinates, a number beyond the float64 range
@@ -62,9 +65,12 @@ from ._tritri import MAX_THREADS, Result
 from ._tritri import arrange as _arrange
 from ._tritri import arrange_exact as _arrange_exact
 from ._tritri import classify as _classify
+from ._tritri import classify_exact as _classify_exact
 from ._tritri import intersections as _intersections
+from ._tritri import intersections_exact as _intersections_exact
 from ._tritri import load_mesh as _load_mesh
 from ._tritri import self_intersections as _self_intersections
+from ._tritri import self_intersections_exact as _self_intersections_exact
 from ._tritri import _stats_key_list
 
 __all__ = ["Result", "ArgumentTypeError", "MAX_THREADS", "classify", "self_intersections", "intersections",
@@ -193,27 +199,50 @@ def _is_double(q):
     return (d & (d - 1)) == 0 and float(q) == q  # float(q) is correctly rounded
 
 
-def _arrange_vertices(x):
-    """V for arrange: (float64 n x 3 array, exact input?) when every value is exactly a
-    float64, else (list of 3n hexadecimal "n/d" strings, True). Exact input: some value is
-    a non-integer Rational (e.g. a Fraction) or not exactly a float64."""
-    a = _as_array(x, "V", "arrange", "numbers")
+def _coordinates(x, name, function, check_shape):
+    """Coordinates for an entry with an exact path: (float64 array, has_fraction) when every
+    value is exactly a float64, else (flat list of the Fractions, True). Exact: some value is
+    a non-integer Rational (e.g. a Fraction) or not exactly a float64. has_fraction: some
+    value is a non-integer Rational. check_shape(shape) raises for a wrong shape."""
+    a = _as_array(x, name, function, "numbers")
     if (a.dtype.kind in "iu" and a.dtype.itemsize == 8 and a.size
             and ((a > 2**53).any() or (a < -2**53).any())) or (a.dtype.kind == "f" and a.dtype.itemsize > 8):
         a = a.astype(object)  # int64 beyond 2**53, long double: maybe not doubles, so exactly
     if a.dtype.kind != "O":
-        return _vertices(a, "V", "arrange"), False
+        return _float_array(a, name, function), False
     values, all_double, fraction = [], True, False
     for index, v in _np.ndenumerate(a):
-        q = _exact_coordinate(v, f"tritri.arrange: V{list(index) if index else ''}")
+        q = _exact_coordinate(v, f"tritri.{function}: {name}{list(index) if index else ''}")
         all_double = all_double and _is_double(q)
         fraction = fraction or (isinstance(v, _numbers.Rational) and not isinstance(v, _numbers.Integral))
         values.append(q)
-    if a.size and (a.ndim != 2 or a.shape[1] != 3):
-        raise ValueError(f"tritri.arrange: V must be an n x 3 array of vertex coordinates, got shape {a.shape}")
+    if a.size:
+        check_shape(a.shape)
     if all_double:
-        return _vertices(a, "V", "arrange"), fraction  # as before: float(v) of each value
-    return [f"{q.numerator:x}/{q.denominator:x}" for q in values], True
+        return _float_array(a, name, function), fraction  # as before: float(v) of each value
+    return values, True
+
+
+def _hex_rationals(values):
+    """Coordinates (a float64 array or a list of Fractions) as the hexadecimal "n/d"
+    strings of the exact entries, row after row."""
+    if isinstance(values, _np.ndarray):
+        values = [_Fraction(*float(v).as_integer_ratio()) for v in values.ravel()]
+    return [f"{q.numerator:x}/{q.denominator:x}" for q in values]
+
+
+def _n_by_3(name, function):
+    def check(shape):
+        if len(shape) != 2 or shape[1] != 3:
+            raise ValueError(f"tritri.{function}: {name} must be an n x 3 array of vertex coordinates, "
+                             f"got shape {shape}")
+    return check
+
+
+def _mesh_vertices(x, name, function):
+    """V of a mesh entry: a contiguous n x 3 float64 array, or a list of Fractions (exact)."""
+    values, _ = _coordinates(x, name, function, _n_by_3(name, function))
+    return values if isinstance(values, list) else _vertices(values, name, function)
 
 
 def _fraction_rows(flat):
@@ -240,7 +269,9 @@ def _thread_count(threads):
 def classify(a, b):
     """Classifies exactly how triangles a and b intersect.
 
-    a, b: 3 x 3 arrays, one vertex per row (finite). Returns a Result:
+    a, b: 3 x 3 arrays, one vertex per row (finite; float64 values, or exact ones as for
+    arrange's V: if some value is not exactly a float64, both triangles are classified on
+    their exact rationals). Returns a Result:
       points     list of (type, id0, id1): every corner of the intersection, named by the
                  two sub-simplices that meet there; type is the C++ enum's name
                  (VA_ON_VB, VA_ON_EB, VB_ON_EA, VA_ON_TB, VB_ON_TA, EA_CROSS_EB,
@@ -253,18 +284,25 @@ def classify(a, b):
     Raises ValueError for a shape other than 3 x 3 or a coordinate that is NaN, infinite or
     beyond the float64 range; ArgumentTypeError for non-numbers (bool, complex, str, ...).
     """
-    ta, tb = _float_array(a, "a", "classify"), _float_array(b, "b", "classify")
+    def three_by_three(name):
+        def check(shape):
+            if tuple(shape) != (3, 3):
+                raise ValueError(f"tritri.classify: {name} must be a 3 x 3 array (one vertex per row), "
+                                 f"got shape {tuple(shape)}")
+        return check
+    (ta, _), (tb, _) = (_coordinates(t, name, "classify", three_by_three(name)) for t, name in ((a, "a"), (b, "b")))
+    if isinstance(ta, list) or isinstance(tb, list):  # a value that is not a float64: exactly
+        return _classify_exact(_hex_rationals(ta), _hex_rationals(tb))
     for t, name in ((ta, "a"), (tb, "b")):
-        if t.shape != (3, 3):
-            raise ValueError(f"tritri.classify: {name} must be a 3 x 3 array (one vertex per row), "
-                             f"got shape {t.shape}")
+        three_by_three(name)(t.shape)
     return _classify(_np.ascontiguousarray(ta), _np.ascontiguousarray(tb))
 
 
 def self_intersections(V, F):
     """Every pair of triangles of one mesh that intersect beyond the vertices they share.
 
-    V: n x 3 coordinates; F: m x 3 vertex indices. Returns (pairs, results):
+    V: n x 3 coordinates (float64, or exact values as for arrange: then classified on the
+    exact rationals); F: m x 3 vertex indices. Returns (pairs, results):
       pairs    k x 2 int64 array of rows (i, j) of F, i < j, sorted
       results  list of k Result, classify(V[F[i]], V[F[j]])
     Vertices are shared by index. A pair is reported when its intersection has a point
@@ -273,20 +311,27 @@ def self_intersections(V, F):
     their shared edge or vertex are not reported; corners at equal coordinates with
     different indices touch (reported); degenerate triangles are never reported.
     """
-    return _self_intersections(_vertices(V, "V", "self_intersections"),
-                               _faces(F, "F", "self_intersections"))
+    f = "self_intersections"
+    Va, Fa = _mesh_vertices(V, "V", f), _faces(F, "F", f)
+    if isinstance(Va, list):
+        return _self_intersections_exact(_hex_rationals(Va), Fa)
+    return _self_intersections(Va, Fa)
 
 
 def intersections(V1, F1, V2, F2):
     """Every pair (triangle of mesh 1, triangle of mesh 2) whose closed triangles meet.
 
+    V1, V2: coordinates as for self_intersections (if either holds a value that is not
+    exactly a float64, both meshes are classified on their exact rationals).
     Returns (pairs, results): pairs a k x 2 int64 array of (row of F1, row of F2), sorted;
     results the k Result of classify(V1[F1[i]], V2[F2[j]]). Any common point counts;
     degenerate triangles are never reported.
     """
     f = "intersections"
-    return _intersections(_vertices(V1, "V1", f), _faces(F1, "F1", f),
-                          _vertices(V2, "V2", f), _faces(F2, "F2", f))
+    V1a, F1a, V2a, F2a = _mesh_vertices(V1, "V1", f), _faces(F1, "F1", f), _mesh_vertices(V2, "V2", f), _faces(F2, "F2", f)
+    if isinstance(V1a, list) or isinstance(V2a, list):  # both exactly
+        return _intersections_exact(_hex_rationals(V1a), F1a, _hex_rationals(V2a), F2a)
+    return _intersections(V1a, F1a, V2a, F2a)
 
 
 def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None, rounding="nearest"):
@@ -366,12 +411,12 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None
             raise ValueError(f"tritri.arrange: labels must have one entry per row of F ({Fa.shape[0]}), "
                              f"got {la.shape[0]}")
         la = _np.ascontiguousarray(la)
-    Va, exact_input = _arrange_vertices(V)
+    Va, exact_input = _coordinates(V, "V", f, _n_by_3("V", f))
     want_exact = exact_input if exact_output is None else bool(exact_output)
     if isinstance(Va, list):
-        out = _arrange_exact(Va, Fa, la, classifier, threads, safe)
+        out = _arrange_exact(_hex_rationals(Va), Fa, la, classifier, threads, safe)
     else:
-        out = _arrange(Va, Fa, la, classifier, threads, want_exact and not safe, safe)
+        out = _arrange(_vertices(Va, "V", f), Fa, la, classifier, threads, want_exact and not safe, safe)
     if "V_exact" in out:
         exact = out.pop("V_exact")
         if want_exact:
