@@ -14,6 +14,7 @@
 #include <CGAL/Gmpq.h>  // before Eigen is used with it
 #include <CGAL/Simple_cartesian.h>
 
+#include "support/brute_force_mesh_pairs.h"
 #include "support/mesh_generators.h"
 #include <tritri/cgal_kernel.h>
 #include <tritri/classify.h>
@@ -67,29 +68,13 @@ tritri::Result classify_rows(const RationalMesh& a, int i, const RationalMesh& b
   return tritri::classify<Unfiltered>(p(a, i, 0), p(a, i, 1), p(a, i, 2), p(b, j, 0), p(b, j, 1), p(b, j, 2));
 }
 
-// self_intersections.h's rule, over all pairs i < j.
-std::vector<IntersectingPair> brute_force_self(const RationalMesh& m) {
-  std::vector<IntersectingPair> out;
-  for (int i = 0; i < m.F.rows(); ++i)
-    for (int j = i + 1; j < m.F.rows(); ++j) {
-      const tritri::Result r = classify_rows(m, i, m, j);
-      int shared = 0;
-      for (const auto& p : r.points) shared += p.type == tritri::Type::VA_ON_VB && m.F(i, p.id0) == m.F(j, p.id1);
-      if (int(r.points.size()) > shared || shared == 3) out.push_back({i, j, r});
-    }
-  return out;
-}
-
+std::vector<IntersectingPair> brute_force_self(const RationalMesh& m) { return tritri_test::brute_force_self(m, classify_rows); }
 std::vector<IntersectingPair> brute_force_two(const RationalMesh& a, const RationalMesh& b) {
-  std::vector<IntersectingPair> out;
-  for (int i = 0; i < a.F.rows(); ++i)
-    for (int j = 0; j < b.F.rows(); ++j)
-      if (const tritri::Result r = classify_rows(a, i, b, j); r.intersects()) out.push_back({i, j, r});
-  return out;
+  return tritri_test::brute_force_two(a, b, classify_rows);
 }
 
-// The soup with every coordinate x replaced by round(x * d) / d' style rationals: vertex
-// (x, y, z) of a grid of integers becomes (x / 3, y / 7, z / 21 + offset): non-dyadic.
+// The soup (integer coordinates) scaled to thirds, sevenths and 21sts: vertex (x, y, z)
+// becomes (x / 3, y / 7, z / 21 + z_offset), not dyadic.
 RationalMesh non_dyadic(const TriangleSoup& s, const Gmpq& z_offset) {
   RationalMesh m = rational(s);
   for (Eigen::Index v = 0; v < m.V.rows(); ++v) {

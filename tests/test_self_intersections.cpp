@@ -11,6 +11,7 @@
 //   naming the matrix.
 #include <gtest/gtest.h>
 
+#include "support/brute_force_mesh_pairs.h"
 #include "support/mesh_generators.h"
 #include <tbb/task_arena.h>
 #include <tritri/classify.h>
@@ -52,28 +53,9 @@ tritri::Result classify_rows(const Mesh& a, int i, const Mesh& b, int j) {
   return tritri::classify<tritri::DoubleKernel>(p(a, i, 0), p(a, i, 1), p(a, i, 2), p(b, j, 0), p(b, j, 1), p(b, j, 2));
 }
 
-// All pairs i < j, with the documented rule written out directly.
-std::vector<IntersectingPair> brute_force_self(const Mesh& m) {
-  std::vector<IntersectingPair> out;
-  for (int i = 0; i < m.F.rows(); ++i)
-    for (int j = i + 1; j < m.F.rows(); ++j) {
-      const tritri::Result r = classify_rows(m, i, m, j);
-      int shared = 0;
-      for (const auto& p : r.points) shared += p.type == tritri::Type::VA_ON_VB && m.F(i, p.id0) == m.F(j, p.id1);
-      const bool same_indices = shared == 3;
-      if (int(r.points.size()) > shared || same_indices) out.push_back({i, j, r});
-    }
-  return out;
-}
-
+std::vector<IntersectingPair> brute_force_self(const Mesh& m) { return tritri_test::brute_force_self(m, classify_rows); }
 std::vector<IntersectingPair> brute_force_two(const Mesh& a, const Mesh& b) {
-  std::vector<IntersectingPair> out;
-  for (int i = 0; i < a.F.rows(); ++i)
-    for (int j = 0; j < b.F.rows(); ++j) {
-      const tritri::Result r = classify_rows(a, i, b, j);
-      if (r.intersects()) out.push_back({i, j, r});
-    }
-  return out;
+  return tritri_test::brute_force_two(a, b, classify_rows);
 }
 
 Mesh concatenated(const TriangleSoup& a, const TriangleSoup& b) { return to_eigen(arrangements::concatenate(a, b)); }
