@@ -1,7 +1,8 @@
 // tritri::self_intersections and tritri::intersections on exact rational coordinates
 // (Eigen matrices of CGAL::Gmpq, tritri::RationalKernel):
 // - on meshes of doubles given as rationals, exactly the double path's output (pairs and
-//   results): overlapping spheres, rotated copies, coplanar grids;
+//   results): overlapping spheres, rotated copies, coplanar grids; also with one mesh of
+//   doubles and one of rationals;
 // - on non-dyadic meshes (thirds and sevenths: grids and near-degenerate configurations),
 //   the brute-force classification of all pairs with an unfiltered rational CGAL kernel
 //   (Simple_cartesian<Gmpq>) and the documented rule written out directly;
@@ -109,6 +110,9 @@ TEST(RationalBatch, DoublesAsRationalsGiveTheDoublePathsOutput) {
   EXPECT_GT(expected.size(), 10u);
   const RationalMesh ra = rational(a), rb = rational(b);
   EXPECT_EQ(tritri::intersections(ra.V, ra.F, rb.V, rb.F), expected);
+  // One mesh of doubles, one of rationals: the doubles are taken exactly.
+  EXPECT_EQ(tritri::intersections(doubles(a), faces(a), rb.V, rb.F), expected);
+  EXPECT_EQ(tritri::intersections(ra.V, ra.F, doubles(b), faces(b)), expected);
 }
 
 TEST(RationalBatch, NonDyadicMeshesEqualTheBruteForceRule) {

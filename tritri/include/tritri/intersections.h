@@ -13,7 +13,8 @@
 //       (exact rationals, e.g. an exact arrangement's vertices), |x| <= DBL_MAX
 //   F1  #F1 by 3 matrix of triangle corners, indices into the rows of V1 (any Eigen dense
 //       expression with an integer scalar, e.g. Eigen::MatrixXi)
-//   V2, F2  mesh 2, likewise (V2 with the same kind of scalar as V1)
+//   V2, F2  mesh 2, likewise (when one of V1, V2 holds CGAL::Gmpq, the other's doubles are
+//           taken as rationals, exactly)
 //   An empty matrix (size() == 0) is an empty list, whatever its shape.
 // Output:
 //   a list of tritri::IntersectingPair {i, j, result} (intersecting_pair.h), one per pair
@@ -64,14 +65,12 @@ std::vector<IntersectingPair> intersections(const Eigen::MatrixBase<DerivedV1>& 
                                             const Eigen::MatrixBase<DerivedF1>& F1,
                                             const Eigen::MatrixBase<DerivedV2>& V2,
                                             const Eigen::MatrixBase<DerivedF2>& F2) {
-  using Kernel = detail::MeshKernel<typename DerivedV1::Scalar>;
-  static_assert(std::is_same_v<Kernel, detail::MeshKernel<typename DerivedV2::Scalar>>,
-                "V1 and V2 must hold the same kind of coordinates: floating point, or CGAL::Gmpq");
+  using Kernel = detail::MeshKernel<typename DerivedV1::Scalar, typename DerivedV2::Scalar>;
   using Point = typename Kernel::Point;
-  const detail::MeshVertices<Kernel> points1 = detail::mesh_vertices(V1, "tritri::intersections: V1");
+  const detail::MeshVertices<Kernel> points1 = detail::mesh_vertices<Kernel>(V1, "tritri::intersections: V1");
   const std::vector<detail::MeshTriangle> tris1 =
       detail::checked_triangles(F1, points1.size(), "tritri::intersections: F1");
-  const detail::MeshVertices<Kernel> points2 = detail::mesh_vertices(V2, "tritri::intersections: V2");
+  const detail::MeshVertices<Kernel> points2 = detail::mesh_vertices<Kernel>(V2, "tritri::intersections: V2");
   const std::vector<detail::MeshTriangle> tris2 =
       detail::checked_triangles(F2, points2.size(), "tritri::intersections: F2");
 

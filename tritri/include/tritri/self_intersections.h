@@ -70,7 +70,7 @@ std::vector<IntersectingPair> self_intersections(const Eigen::MatrixBase<Derived
                                                  const Eigen::MatrixBase<DerivedF>& F) {
   using Kernel = detail::MeshKernel<typename DerivedV::Scalar>;
   using Point = typename Kernel::Point;
-  const detail::MeshVertices<Kernel> points = detail::mesh_vertices(V, "tritri::self_intersections: V");
+  const detail::MeshVertices<Kernel> points = detail::mesh_vertices<Kernel>(V, "tritri::self_intersections: V");
   const std::vector<detail::MeshTriangle> tris =
       detail::checked_triangles(F, points.size(), "tritri::self_intersections: F");
 

@@ -86,10 +86,10 @@ std::vector<std::array<CGAL::Gmpq, 3>> checked_rational_vertices(const Eigen::Ma
   return points;
 }
 
-// The kernel for a coordinate scalar: floating point (converted to double) -> DoubleKernel,
-// CGAL::Gmpq -> RationalKernel.
-template <class Scalar>
-using MeshKernel = std::conditional_t<std::is_floating_point_v<Scalar>, DoubleKernel, RationalKernel>;
+// The kernel for coordinate scalars: all floating point (converted to double) ->
+// DoubleKernel; any CGAL::Gmpq -> RationalKernel (doubles are rationals too, exactly).
+template <class... Scalars>
+using MeshKernel = std::conditional_t<(std::is_floating_point_v<Scalars> && ...), DoubleKernel, RationalKernel>;
 
 // Checked vertices as Kernel points, with each coordinate's double bounds for the boxes
 // (for doubles the points themselves).
@@ -106,16 +106,22 @@ struct MeshVertices {
   std::size_t size() const { return points.size(); }
 };
 
-template <class DerivedV>
-MeshVertices<MeshKernel<typename DerivedV::Scalar>> mesh_vertices(const Eigen::MatrixBase<DerivedV>& V,
-                                                                  const std::string& where) {
+// V's rows as Kernel points: DoubleKernel for floating-point V; RationalKernel for V of
+// CGAL::Gmpq, or of doubles converted exactly (a mesh met with a rational one).
+template <class Kernel, class DerivedV>
+MeshVertices<Kernel> mesh_vertices(const Eigen::MatrixBase<DerivedV>& V, const std::string& where) {
   using Scalar = typename DerivedV::Scalar;
   static_assert(std::is_floating_point_v<Scalar> || std::is_same_v<Scalar, CGAL::Gmpq>,
                 "V must hold floating-point or CGAL::Gmpq coordinates");
-  if constexpr (std::is_floating_point_v<Scalar>) {
+  if constexpr (std::is_same_v<Kernel, DoubleKernel>) {
     return {checked_vertices(V, where), {}, {}};
   } else {
-    const std::vector<std::array<CGAL::Gmpq, 3>> rational = checked_rational_vertices(V, where);
+    std::vector<std::array<CGAL::Gmpq, 3>> rational;
+    if constexpr (std::is_floating_point_v<Scalar>) {
+      for (const MeshPoint& p : checked_vertices(V, where)) rational.push_back({p[0], p[1], p[2]});
+    } else {
+      rational = checked_rational_vertices(V, where);
+    }
     MeshVertices<RationalKernel> out;
     out.points.reserve(rational.size());
     out.lo.resize(rational.size());
