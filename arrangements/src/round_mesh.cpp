@@ -141,7 +141,7 @@ RoundedMesh round_mesh(const Mesh& mesh, double h, double snap, double& max_move
       const Vec3 d = double_coordinates(mesh.vertices[v]);
       move[v] = position[v] == d
                     ? 0.0
-                    : distance_bound({CGAL::Gmpq(d[0]), CGAL::Gmpq(d[1]), CGAL::Gmpq(d[2])}, position[v]);
+                    : distance_bound(to_exact(d), position[v]);
     } else {
       move[v] = distance_bound(exact[v], position[v]);
     }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "arrangements/as_input.h"
 #include "io/mesh_reader.h"
 #include "io/rational_token.h"
 #include "io/triangulate_polygon.h"
@@ -101,8 +102,7 @@ void SoupBuilder::finish() {
       if (next < exact_.size() && exact_[next].first == i) {
         exact_vertices.push_back(std::move(exact_[next++].second));
       } else {
-        const Vec3& v = vertices[i];
-        exact_vertices.push_back({CGAL::Gmpq(v[0]), CGAL::Gmpq(v[1]), CGAL::Gmpq(v[2])});
+        exact_vertices.push_back(to_exact(vertices[i]));
       }
     }
     std::vector<Vec3>().swap(vertices);

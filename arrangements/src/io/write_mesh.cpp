@@ -18,6 +18,7 @@
 #include <system_error>
 #include <vector>
 
+#include "arrangements/as_input.h"
 #include "io/atomic_file.h"
 #include "io/mesh_file_checks.h"
 #include "io/mesh_format.h"
@@ -90,7 +91,7 @@ void append_rational(AtomicFile& f, const CGAL::Gmpq& q, std::string& scratch) {
 
 std::array<CGAL::Gmpq, 3> exact_coordinates(const tritri::ImplicitPoint& p) { return tritri::to_exact(p); }
 const ExactVec3& exact_coordinates(const ExactVec3& p) { return p; }
-std::array<CGAL::Gmpq, 3> exact_coordinates(const Vec3& p) { return {CGAL::Gmpq(p[0]), CGAL::Gmpq(p[1]), CGAL::Gmpq(p[2])}; }
+ExactVec3 exact_coordinates(const Vec3& p) { return to_exact(p); }
 
 Vec3 nearest_double(const tritri::ImplicitPoint& p) { return tritri::to_double(p); }
 Vec3 nearest_double(const ExactVec3& p) { return tritri::to_double(p); }
