@@ -177,6 +177,28 @@ TEST(RoundSafe, RotatedCopiesOfASphere) {
   }
 }
 
+TEST(RoundSafe, TwoCopiesRotatedByPiNeedTheLastResort) {
+  // An odd number of segments: the copy rotated by pi (sin(pi) is not 0 in doubles) has
+  // its meridians between the original's, and the two cross along curves at grazing
+  // angles near the poles, where the passes of rounding and arranging keep making new
+  // crossings at every level. Rounding per vertex (coarser grids only at the conflicts)
+  // settles it: few vertices move, by a few ulps.
+  for (int segments : {19, 39}) {
+    const TriangleSoup soup = rotated_copies(uv_sphere({0, 0, 0}, 1.0, (segments + 1) / 2, segments), 2);
+    const ArrangeResult first = arrange(soup, ArrangeOptions{});
+    ASSERT_GT(first.stats.intersection_points, 0u);
+    const std::string name = "two copies, " + std::to_string(segments) + " segments";
+    bool nearest_ok = true;
+    const RoundReport report = expect_safe_rounding(first.mesh, name, nearest_ok);
+    EXPECT_FALSE(nearest_ok) << name;
+    EXPECT_GT(report.coarsened, 0u) << name << ": the passes alone settled it; the test tells nothing";
+    EXPECT_LT(report.coarsened, first.mesh.vertices.size() / 10) << name;
+    EXPECT_LE(report.max_move_relative, 1e-12) << name;
+    std::printf("%s: %d passes, %zu vertices on coarser grids (coarsest %.3g), largest move / diagonal %.3g\n",
+                name.c_str(), report.passes, report.coarsened, report.grid, report.max_move_relative);
+  }
+}
+
 TEST(RoundSafe, NearlyCoincidentLayersWithDifferentTriangulationsAreRefusedCleanly) {
   // The known limit: three copies rotated by 2 pi / 3 lie within 1e-16 of each other, each
   // triangulated differently; at every level the rounded layers cross again in thousands

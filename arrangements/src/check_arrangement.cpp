@@ -70,9 +70,10 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
   out.pairs_checked = pairs.size();
 
   std::mutex m;
-  auto report = [&](std::size_t& counter, std::string msg) {
+  auto report = [&](std::size_t& counter, std::string msg, int i = -1, int j = -1) {
     std::lock_guard<std::mutex> lock(m);
     ++counter;
+    if (i >= 0) out.violating_pairs.emplace_back(i, j);
     if (out.examples.size() < max_reported) out.examples.push_back(std::move(msg));
   };
   tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
@@ -88,7 +89,7 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     int shared = 0;
     for (int x : a) shared += std::count(b.begin(), b.end(), x) > 0;
     if (shared == 3) {
-      report(out.violations, describe(mesh, i, j, "same three vertices"));
+      report(out.violations, describe(mesh, i, j, "same three vertices"), i, j);
       return;
     }
     // Neighbours that provably meet only in what they share (tritri's sufficient
@@ -104,18 +105,19 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     int on_shared = 0;
     for (const auto& p : r.points) {
       if (p.type != tritri::Type::VA_ON_VB || a[p.id0] != b[p.id1]) {
-        report(out.violations, describe(mesh, i, j, "they meet beyond their shared vertices:" + points_of(r)));
+        report(out.violations, describe(mesh, i, j, "they meet beyond their shared vertices:" + points_of(r)), i, j);
         return;
       }
       ++on_shared;
     }
     if (on_shared != shared) {
-      report(out.violations, describe(mesh, i, j, "a shared vertex is not reported"));
+      report(out.violations, describe(mesh, i, j, "a shared vertex is not reported"), i, j);
       return;
     }
     if (r.segments.size() != (shared == 2 ? 1u : 0u))
-      report(out.violations, describe(mesh, i, j, "unexpected intersection segments"));
+      report(out.violations, describe(mesh, i, j, "unexpected intersection segments"), i, j);
   });
+  std::sort(out.violating_pairs.begin(), out.violating_pairs.end());
   return out;
 }
 

@@ -8,12 +8,16 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 #include <string>
 
 #include <tritri/implicit_point.h>
 
 #include "arrangements/arrange.h"
 #include "arrangements/as_input.h"
+#include "round_per_vertex.h"
+#include "support/rounding_grid.h"
 
 namespace arrangements {
 namespace {
@@ -26,30 +30,6 @@ const ExactVec3& exact_coordinates(const ExactVec3& p) { return p; }
 Vec3 double_coordinates(const tritri::ImplicitPoint& p) { return p.approx(); }  // explicit points only
 Vec3 double_coordinates(const ExactVec3&) { return {}; }                         // never asked
 
-// An upper bound of the distance between rational q and double point p (the coordinate
-// differences are exact rationals; the factor and one ulp cover to_double, the squares and
-// the root).
-double distance_bound(const ExactVec3& q, const Vec3& p) {
-  double sum = 0;
-  for (int k = 0; k < 3; ++k) {
-    const double d = std::abs(CGAL::to_double(q[k] - CGAL::Gmpq(p[k])));
-    sum += d * d;
-  }
-  return sum == 0 ? 0.0
-                  : std::nextafter(std::sqrt(sum) * (1 + 8 * std::numeric_limits<double>::epsilon()),
-                                   std::numeric_limits<double>::infinity());
-}
-
-// The grid a pass rounds to: spacing 0 is "the nearest double"; else a power of two h, and
-// every coordinate goes to the nearest multiple of h (a double: |x| / h < 2^53 for the
-// spacings used). The quotient by h and its rounding to an integer are exact.
-Vec3 round_point(const Vec3& nearest, double h) {
-  if (h == 0) return nearest;
-  Vec3 out;
-  for (int k = 0; k < 3; ++k) out[k] = std::nearbyint(nearest[k] / h) * h;
-  return out;
-}
-
 // Rounding levels: level 0 rounds to the nearest double; level j >= 1 to the uniform grid of
 // spacing 2^(8j) units in the last place of the largest coordinate magnitude. A uniform grid,
 // unlike the doubles, is as coarse near zero as anywhere: features thinner than a cell (a
@@ -58,12 +38,7 @@ Vec3 round_point(const Vec3& nearest, double h) {
 constexpr int kLevels = 5;
 constexpr int kPassesPerLevel = 4;
 
-double level_spacing(double largest, int level) {
-  if (level == 0) return 0;
-  int exponent = 0;
-  std::frexp(largest > 0 ? largest : 1.0, &exponent);  // largest < 2^exponent
-  return std::ldexp(1.0, exponent - std::numeric_limits<double>::digits + 8 * level);
-}
+double level_spacing(double largest, int level) { return level == 0 ? 0 : grid_spacing(largest, 8 * level); }
 
 // The mesh with every vertex rounded to the grid of spacing h, except that a vertex that
 // is not a double and lies within `snap` of a double vertex (exact squared distance) is
@@ -236,8 +211,37 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     }
     if (r.passes >= options.max_passes) break;
   }
+  // The last resort: every vertex on a grid of its own, coarser only where needed, without
+  // new points (round_per_vertex.h). Arranging its result once more proves it.
+  if (r.passes < options.max_passes) {
+    std::vector<ExactVec3> exact(mesh.vertices.size());
+    tbb::parallel_for(std::size_t{0}, exact.size(), [&](std::size_t v) {
+      exact[v] = is_double(mesh.vertices[v]) ? to_exact(double_coordinates(mesh.vertices[v]))
+                                             : exact_coordinates(mesh.vertices[v]);
+    });
+    std::vector<Vec3> nearest_positions(exact.size());
+    tbb::parallel_for(std::size_t{0}, exact.size(),
+                      [&](std::size_t v) { nearest_positions[v] = tritri::to_double(exact[v]); });
+    const std::optional<PerVertexRounding> per =
+        round_per_vertex(exact, nearest_positions, mesh.triangles, mesh.source, mesh.label_set, mesh.label_sets,
+                         options.max_passes - r.passes);
+    if (per) {
+      r.passes += per->rounds;
+      if (!unchanged(arrange(as_input(per->mesh), arrange_options).stats))
+        throw std::logic_error("round_safe: the rounding per vertex passed the check but is not an arrangement");
+      r.max_move = per->max_move;
+      r.grid = per->grid;
+      r.coarsened = per->coarsened;
+      const double diagonal = bounding_box_diagonal(per->mesh.vertices);
+      r.max_move_relative = diagonal > 0 ? r.max_move / diagonal : 0.0;
+      if (report) *report = r;
+      return per->mesh;
+    }
+  }
   throw RoundingError("round_safe: the rounded mesh still has " + std::to_string(last_intersecting) +
-                      " intersecting pairs after " + std::to_string(r.passes) + " passes of rounding and arranging");
+                      " intersecting pairs after " + std::to_string(r.passes) +
+                      " passes of rounding and arranging, and rounding per vertex did not settle it within " +
+                      std::to_string(options.max_passes) + " passes or a grid of 2^32 ulps");
 }
 
 }  // namespace

@@ -10,13 +10,15 @@
 // vertex inside another triangle or on its edge, crossing or overlapping triangles are
 // all violations. Degenerate output triangles are violations too.
 //
-// Returns the violations (up to max_reported, all counted). Exact. Cost: one box
+// Returns the violations (described up to max_reported, all counted; every violating pair
+// of triangles listed). Exact. Cost: one box
 // self-intersection search plus one exact classification per overlapping pair (the
 // filters make most of them as cheap as double arithmetic); parallel (TBB).
 #pragma once
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "arrangements/output_mesh.h"
@@ -28,6 +30,7 @@ struct ArrangementCheck {
   std::size_t violations = 0;
   std::size_t degenerate_triangles = 0;
   std::vector<std::string> examples;  // human-readable, at most max_reported
+  std::vector<std::pair<int, int>> violating_pairs;  // all of them: triangles i < j, sorted
   bool ok() const { return violations == 0 && degenerate_triangles == 0; }
 };
 

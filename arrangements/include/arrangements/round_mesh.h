@@ -57,6 +57,7 @@
 // clean mesh of that size).
 #pragma once
 
+#include <cstddef>
 #include <stdexcept>
 
 #include "arrangements/output_mesh.h"
@@ -64,7 +65,7 @@
 namespace arrangements {
 
 struct RoundSafeOptions {
-  int max_passes = 20;
+  int max_passes = 64;  // passes of rounding and arranging, then rounds of the last resort
   int threads = 0;  // worker threads of the pipeline runs: 0 for all cores
 };
 
@@ -74,6 +75,9 @@ struct RoundReport {
   double max_move_relative = 0;     // max_move / the diagonal of the result's bounding box
   double grid = 0;                  // 0: rounded to nearest doubles (level 0); else the
                                     // spacing of the uniform grid of the level that succeeded
+                                    // (the last resort: of the coarsest grid it used)
+  std::size_t coarsened = 0;        // vertices the last resort rounded to a coarser grid
+                                    // (0 when the passes succeeded)
 };
 
 struct RoundingError : std::runtime_error {

@@ -1,0 +1,47 @@
+// The grids round_safe rounds to (round_mesh.h) and the displacement bound it reports:
+// shared by the passes of rounding and arranging (round_mesh.cpp) and the last resort of
+// rounding per vertex (round_per_vertex.cpp).
+#pragma once
+
+#include <CGAL/Gmpq.h>
+
+#include <cmath>
+#include <limits>
+
+#include "arrangements/triangle_soup.h"
+
+namespace arrangements {
+
+// The uniform grid of spacing 2^k units in the last place of `largest` (the largest
+// coordinate magnitude; 1 when it is 0). For k < 53 every multiple of it below 2^53
+// spacings is a double.
+inline double grid_spacing(double largest, int k) {
+  int exponent = 0;
+  std::frexp(largest > 0 ? largest : 1.0, &exponent);  // largest < 2^exponent
+  return std::ldexp(1.0, exponent - std::numeric_limits<double>::digits + k);
+}
+
+// Every coordinate of `nearest` to the nearest multiple of h (h = 0: unchanged). The
+// quotient by a power of two and its rounding to an integer are exact.
+inline Vec3 round_point(const Vec3& nearest, double h) {
+  if (h == 0) return nearest;
+  Vec3 out;
+  for (int k = 0; k < 3; ++k) out[k] = std::nearbyint(nearest[k] / h) * h;
+  return out;
+}
+
+// An upper bound of the distance between rational q and double point p (the coordinate
+// differences are exact rationals; the factor and one ulp cover to_double, the squares and
+// the root).
+inline double distance_bound(const ExactVec3& q, const Vec3& p) {
+  double sum = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double d = std::abs(CGAL::to_double(q[k] - CGAL::Gmpq(p[k])));
+    sum += d * d;
+  }
+  return sum == 0 ? 0.0
+                  : std::nextafter(std::sqrt(sum) * (1 + 8 * std::numeric_limits<double>::epsilon()),
+                                   std::numeric_limits<double>::infinity());
+}
+
+}  // namespace arrangements
