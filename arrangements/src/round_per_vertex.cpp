@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstddef>
 #include <map>
 #include <numeric>
 
@@ -19,6 +20,7 @@ namespace arrangements {
 namespace {
 
 constexpr int kMaxLevel = 16;  // 2^(2 * 16) = 2^32 ulps
+constexpr int kRoundsWithoutProgress = 2;
 
 // The mesh on the rounded positions, and for each vertex of the arrangement the vertex of
 // the mesh at its position (-1: on no triangle of it).
@@ -40,7 +42,8 @@ Candidate rounded_mesh(const std::vector<Vec3>& position, const std::vector<Tri>
   const std::size_t nv = position.size();
   std::vector<int> order(nv), same(nv);
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return position[a] < position[b] || (position[a] == position[b] && a < b); });
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return position[a] < position[b] || (position[a] == position[b] && a < b); });
   for (std::size_t k = 0; k < nv; ++k)
     same[order[k]] = k > 0 && position[order[k]] == position[order[k - 1]] ? same[order[k - 1]] : order[k];
 
@@ -98,6 +101,8 @@ std::optional<PerVertexRounding> round_per_vertex(const std::vector<ExactVec3>& 
   std::vector<int> level(nv, 0);
   std::vector<Vec3> position = nearest;
   PerVertexRounding out;
+  std::size_t fewest = SIZE_MAX;  // violations: the fewest so far, and rounds since then
+  int rounds_since_fewest = 0;
   for (int round = 1; round <= max_rounds; ++round) {
     Candidate c = rounded_mesh(position, triangles, source, label_set, label_sets);
     const ArrangementCheck check = check_arrangement(c.mesh, 0);
@@ -111,6 +116,14 @@ std::optional<PerVertexRounding> round_per_vertex(const std::vector<ExactVec3>& 
       tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) { move[v] = distance_bound(exact[v], position[v]); });
       out.max_move = nv == 0 ? 0.0 : *std::max_element(move.begin(), move.end());
       return out;
+    }
+    // Coarser grids that stop reducing the conflicts only spread them (layers that nearly
+    // coincide over whole faces): give up rather than collapse the model.
+    if (check.violations < fewest) {
+      fewest = check.violations;
+      rounds_since_fewest = 0;
+    } else if (++rounds_since_fewest == kRoundsWithoutProgress) {
+      return std::nullopt;
     }
     // Every vertex of a violating pair goes to the next coarser grid, with every vertex that
     // shares its position (else they part again).

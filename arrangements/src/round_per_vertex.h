@@ -13,8 +13,10 @@
 //
 // Termination: every round that does not succeed raises the level of at least one vertex,
 // and levels are bounded, so there are at most 16 x #vertices rounds; `max_rounds` bounds
-// them further. Returns nullopt when a vertex would need a grid coarser than 2^32 ulps or
-// the rounds run out.
+// them further. Returns nullopt when a vertex would need a grid coarser than 2^32 ulps,
+// when 2 rounds in a row found no fewer violations than the best round before them
+// (coarsening then spreads the conflicts instead of removing them), or when the rounds
+// run out.
 // Displacement: a vertex moves by at most half a cell diagonal of its level from its
 // nearest double (reported exactly bounded, from the rationals).
 // Cost per round: one sort of the vertices and one check_arrangement of the rounded mesh.
