@@ -130,7 +130,7 @@ TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
   const double scale = tritri_test::test_scale();
   const std::size_t every = scale < 1 ? static_cast<std::size_t>(std::lround(1 / scale)) : 1;
   std::size_t index = 0;
-  int rounded = 0, more_than_one_pass = 0, coarser_grid = 0, nearest_invalid = 0, max_passes = 0;
+  int rounded = 0, more_than_one_pass = 0, coarser_grid = 0, last_resort = 0, nearest_invalid = 0, max_passes = 0;
   double max_relative = 0;
   std::string max_relative_mesh;
   tritri_test::for_each_loadable_mesh(dir, [&](const fs::path& f, const TriangleSoup& input) {
@@ -142,6 +142,7 @@ TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
     ++rounded;
     more_than_one_pass += report.passes > 1;
     coarser_grid += report.grid > 0;
+    last_resort += report.coarsened > 0;
     nearest_invalid += !nearest_ok;
     max_passes = std::max(max_passes, report.passes);
     if (report.max_move_relative > max_relative) {
@@ -154,8 +155,9 @@ TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
     EXPECT_GT(nearest_invalid, 0) << "rounding to nearest was valid everywhere: the test tells nothing";
   }
   std::printf("rounded %d shared meshes with intersections: %d needed more than one pass (at most %d), %d a "
-              "coarser grid, %d were invalid rounded to nearest; largest move / bounding-box diagonal %.3g (%s)\n",
-              rounded, more_than_one_pass, max_passes, coarser_grid, nearest_invalid, max_relative,
+              "coarser grid (%d the last resort), %d were invalid rounded to nearest; largest move / bounding-box "
+              "diagonal %.3g (%s)\n",
+              rounded, more_than_one_pass, max_passes, coarser_grid, last_resort, nearest_invalid, max_relative,
               max_relative_mesh.c_str());
 }
 

@@ -58,8 +58,10 @@ options:
                           a nearby triangle;
                           safe: rounded, re-arranged and rounded again until the rounded
                           mesh is itself an arrangement (its triangles meet only in shared
-                          vertices and edges, decided exactly); provenance kept; exit
-                          status 4 if that takes more than 20 passes. Stats round_*
+                          vertices and edges, decided exactly); if that does not
+                          settle, every vertex rounded on its own, to coarser grids only
+                          at the conflicts; provenance kept; exit status 4 if neither
+                          settles within 64 passes. Stats round_*
   --check                 verify the arrangement exactly: every pair of triangles with
                           overlapping boxes meets only in shared vertices and edges
                           (tritri on the implicit points; with --round safe, on the rounded
