@@ -240,8 +240,9 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   }
   throw RoundingError("round_safe: the rounded mesh still has " + std::to_string(last_intersecting) +
                       " intersecting pairs after " + std::to_string(r.passes) +
-                      " passes of rounding and arranging, and rounding per vertex did not settle it within " +
-                      std::to_string(options.max_passes) + " passes or a grid of 2^32 ulps");
+                      " passes of rounding and arranging; rounding per vertex did not settle it either (it stops "
+                      "after two rounds without fewer conflicts, at a grid of 2^32 ulps, or at " +
+                      std::to_string(options.max_passes) + " passes in all)");
 }
 
 }  // namespace
