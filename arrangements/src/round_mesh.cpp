@@ -228,7 +228,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     if (per) {
       r.passes += per->rounds;
       if (!unchanged(arrange(as_input(per->mesh), arrange_options).stats))
-        throw std::logic_error("round_safe: the rounding per vertex passed the check but is not an arrangement");
+        throw RoundingError("round_safe: the rounding per vertex passed the check but arranging it changed it");
       r.max_move = per->max_move;
       r.grid = per->grid;
       r.coarsened = per->coarsened;

@@ -191,6 +191,7 @@ int main(int argc, char** argv) {
             s.round_passes = report.passes;
             s.round_max_move = report.max_move;
             s.round_max_move_rel = report.max_move_relative;
+            s.round_coarsened = report.coarsened;
             add_write_time(s, seconds_since(tr));
           }
           if (output) {

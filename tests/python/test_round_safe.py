@@ -9,6 +9,8 @@ tritri.arrange(..., rounding="safe") returns a float64 mesh that is itself an ar
   exact, sources are those of the exact arrangement (the two layers merge into one with
   both labels), stats report the
   passes and a displacement bound;
+- two copies of a sphere with 19 meridians turned by pi (grazing crossings) need the last
+  resort, rounding per vertex: stats report round_coarsened > 0;
 - exact input (Fractions) takes the exact path and rounds safely the same way;
 - refusals: an unknown rounding (ValueError), a rounding that is not a str
   (ArgumentTypeError), exact_output=True with rounding="safe" (ValueError).
@@ -85,6 +87,22 @@ def test_safe_rounding_is_an_arrangement_and_nearest_is_not(copies):
     assert set(safe["source"].tolist()) <= exact_sources
     for ls in safe["label_set"]:
         assert set(safe["label_sets"][ls]) <= {0, 1}
+
+
+def test_grazing_copies_need_the_last_resort():
+    # An odd number of meridians: the copy turned by pi has its meridians between the
+    # original's, and the layers cross at grazing angles near the poles, where rounding and
+    # re-arranging keep making new crossings; the last resort (rounding per vertex) settles
+    # it with a few vertices on coarser grids, a few ulps off.
+    V, F = uv_sphere((0.0, 0.0, 0.0), 1.0, 10, 19)
+    centre = 0.5 * (V.min(axis=0) + V.max(axis=0))  # turned about its box's centre
+    V2, F2 = rotated_copies(V, F, 2, centre)
+    out = tritri.arrange(V2, F2, rounding="safe")
+    assert_is_arrangement(out)
+    s = out["stats"]
+    assert 0 < s["round_coarsened"] < len(out["V"]) // 10
+    assert 0 < s["round_max_move_rel"] < 1e-12
+    assert tritri.arrange(V2, F2)["stats"]["round_coarsened"] == 0
 
 
 def test_exact_input_rounds_safely():

@@ -51,6 +51,7 @@ struct ArrangeStats {
   double peak_rss_mb = 0;
   int round_passes = 0;  // filled by the caller that rounds (round_mesh.h), else 0
   double round_max_move = 0, round_max_move_rel = 0;
+  std::size_t round_coarsened = 0;
 };
 
 // One row of the table.
@@ -115,7 +116,9 @@ inline constexpr auto kArrangeStats = std::make_tuple(
     stat_entry("round_max_move", &ArrangeStats::round_max_move, -3,
                "--round safe: every output vertex lies within this distance of the exact arrangement"),
     stat_entry("round_max_move_rel", &ArrangeStats::round_max_move_rel, -3,
-               "round_max_move divided by the diagonal of the bounding box"));
+               "round_max_move divided by the diagonal of the bounding box"),
+    stat_entry("round_coarsened", &ArrangeStats::round_coarsened, 0,
+               "--round safe: vertices its last resort moved to a coarser grid (0 unless the passes failed)"));
 
 // The keys and meanings alone, in order.
 struct StatKey {
