@@ -17,6 +17,8 @@
 #include "arrangements/arrange.h"
 #include "arrangements/as_input.h"
 #include "round_per_vertex.h"
+#include "round_rerouting.h"
+#include "support/mesh_on_positions.h"
 #include "support/rounding_grid.h"
 
 namespace arrangements {
@@ -211,36 +213,71 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     }
     if (r.passes >= options.max_passes) break;
   }
-  // The last resort: every vertex on a grid of its own, coarser only where needed, without
-  // new points (round_per_vertex.h). Arranging its result once more proves it.
+  // The last resorts make no new points: vertices stay at their nearest doubles while
+  // slivers collapse and edges and faces are rerouted through vertices within an ulp
+  // (round_rerouting.h); what that leaves, vertices on grids of their own, coarser only
+  // where needed (round_per_vertex.h). Arranging the result once more proves it.
   if (r.passes < options.max_passes) {
     std::vector<ExactVec3> exact(mesh.vertices.size());
-    tbb::parallel_for(std::size_t{0}, exact.size(), [&](std::size_t v) {
-      exact[v] = is_double(mesh.vertices[v]) ? to_exact(double_coordinates(mesh.vertices[v]))
-                                             : exact_coordinates(mesh.vertices[v]);
-    });
     std::vector<Vec3> nearest_positions(exact.size());
-    tbb::parallel_for(std::size_t{0}, exact.size(),
-                      [&](std::size_t v) { nearest_positions[v] = tritri::to_double(exact[v]); });
-    const std::optional<PerVertexRounding> per =
-        round_per_vertex(exact, nearest_positions, mesh.triangles, mesh.source, mesh.label_set, mesh.label_sets,
-                         options.max_passes - r.passes);
-    if (per) {
-      r.passes += per->rounds;
-      if (!unchanged(arrange(as_input(per->mesh), arrange_options).stats))
-        throw RoundingError("round_safe: the rounding per vertex passed the check but arranging it changed it");
-      r.max_move = per->max_move;
-      r.grid = per->grid;
-      r.coarsened = per->coarsened;
-      const double diagonal = bounding_box_diagonal(per->mesh.vertices);
+    tbb::parallel_for(std::size_t{0}, exact.size(), [&](std::size_t v) {
+      if (is_double(mesh.vertices[v])) {
+        nearest_positions[v] = double_coordinates(mesh.vertices[v]);
+        exact[v] = to_exact(nearest_positions[v]);
+      } else {
+        exact[v] = exact_coordinates(mesh.vertices[v]);
+        nearest_positions[v] = tritri::to_double(exact[v]);
+      }
+    });
+    const Rerouting rerouting = reroute_conflicts(nearest_positions, mesh.triangles, mesh.source, mesh.label_set,
+                                                  mesh.label_sets, ulp, options.max_passes - r.passes);
+    r.passes += rerouting.rounds;
+    r.rerouted = rerouting.rerouted;
+    // The surface of a rerouted triangle is within an ulp of the rounded one.
+    const double reroute_move = rerouting.rerouted > 0 ? ulp : 0.0;
+    auto settled = [&](RoundedMesh rounded, double max_move) {
+      if (!unchanged(arrange(as_input(rounded), arrange_options).stats))
+        throw RoundingError("round_safe: a last resort passed the check but arranging its result changed it");
+      r.max_move = max_move;
+      const double diagonal = bounding_box_diagonal(rounded.vertices);
       r.max_move_relative = diagonal > 0 ? r.max_move / diagonal : 0.0;
       if (report) *report = r;
-      return per->mesh;
+      return rounded;
+    };
+    if (rerouting.violations == 0) {
+      std::vector<double> move(exact.size());
+      tbb::parallel_for(std::size_t{0}, exact.size(),
+                        [&](std::size_t v) { move[v] = distance_bound(exact[v], nearest_positions[v]); });
+      const double vertex_move = move.empty() ? 0.0 : *std::max_element(move.begin(), move.end());
+      return settled(mesh_on_positions(nearest_positions, rerouting.triangles, rerouting.source, rerouting.label_set,
+                                       rerouting.label_sets)
+                         .mesh,
+                     vertex_move + reroute_move);
     }
+    // Rounding per vertex from the arrangement's triangles, then from the rerouted ones.
+    auto per_vertex = [&](const std::vector<Tri>& triangles, const std::vector<std::int64_t>& source,
+                          const std::vector<int>& label_set, const std::vector<LabelSet>& label_sets) {
+      std::optional<PerVertexRounding> per = round_per_vertex(exact, nearest_positions, triangles, source, label_set,
+                                                              label_sets, options.max_passes - r.passes);
+      r.passes += per ? per->rounds : 0;
+      return per;
+    };
+    if (auto per = per_vertex(mesh.triangles, mesh.source, mesh.label_set, mesh.label_sets)) {
+      r.rerouted = 0;
+      r.grid = per->grid;
+      r.coarsened = per->coarsened;
+      return settled(per->mesh, per->max_move);
+    }
+    if (rerouting.rerouted > 0)
+      if (auto per = per_vertex(rerouting.triangles, rerouting.source, rerouting.label_set, rerouting.label_sets)) {
+        r.grid = per->grid;
+        r.coarsened = per->coarsened;
+        return settled(per->mesh, per->max_move + reroute_move);
+      }
   }
   throw RoundingError("round_safe: the rounded mesh still has " + std::to_string(last_intersecting) +
                       " intersecting pairs after " + std::to_string(r.passes) +
-                      " passes of rounding and arranging; rounding per vertex did not settle it either (it stops "
+                      " passes of rounding and arranging; rerouting and rounding per vertex did not settle it either (the latter stops "
                       "after two rounds without fewer conflicts, at a grid of 2^32 ulps, or at " +
                       std::to_string(options.max_passes) + " passes in all)");
 }

@@ -90,6 +90,7 @@ struct RoundReport {
                                     // spacing of the uniform grid of the level that succeeded
                                     // (the last resort: of the coarsest grid it used)
   std::size_t coarsened = 0;        // vertices the last resort rounded to a coarser grid
+  std::size_t rerouted = 0;         // vertices the last resort put on an edge or a face
                                     // (0 when the passes succeeded)
 };
 

@@ -1,0 +1,28 @@
+// The triangles of an arrangement placed on rounded vertex positions, cleaned up: shared by
+// the last resorts of round_safe (round_rerouting.cpp, round_per_vertex.cpp).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "arrangements/output_mesh.h"
+
+namespace arrangements {
+
+// The mesh, and for each input vertex the vertex of the mesh at its position (-1: on no
+// triangle of it).
+struct MeshOnPositions {
+  RoundedMesh mesh;
+  std::vector<int> vertex_of;
+};
+
+// The triangles on `position` (one per input vertex): vertices at one position become one
+// vertex (the first of them); triangles with repeated corners or collinear ones (an exact
+// test) are dropped; triangles on the same three vertices become one, the first, with the
+// union of their label sets (appended to label_sets when new). Vertices are numbered in
+// first-use order. O(n log n) in the vertices and triangles.
+MeshOnPositions mesh_on_positions(const std::vector<Vec3>& position, const std::vector<Tri>& triangles,
+                                  const std::vector<std::int64_t>& source, const std::vector<int>& label_set,
+                                  const std::vector<LabelSet>& label_sets);
+
+}  // namespace arrangements
