@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -29,6 +30,7 @@
 #include "support/loadable_meshes.h"
 #include "support/mesh_generators.h"
 #include "support/shared_meshes.h"
+#include "support/temp_dir.h"
 #include "support/test_scale.h"
 
 namespace {
@@ -130,7 +132,7 @@ TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
   const double scale = tritri_test::test_scale();
   const std::size_t every = scale < 1 ? static_cast<std::size_t>(std::lround(1 / scale)) : 1;
   std::size_t index = 0;
-  int rounded = 0, more_than_one_pass = 0, coarser_grid = 0, last_resort = 0, nearest_invalid = 0, max_passes = 0;
+  int rounded = 0, more_than_one_pass = 0, coarser_grid = 0, last_resort = 0, rerouted = 0, nearest_invalid = 0, max_passes = 0;
   double max_relative = 0;
   std::string max_relative_mesh;
   tritri_test::for_each_loadable_mesh(dir, [&](const fs::path& f, const TriangleSoup& input) {
@@ -143,6 +145,7 @@ TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
     more_than_one_pass += report.passes > 1;
     coarser_grid += report.grid > 0;
     last_resort += report.coarsened > 0;
+    rerouted += report.rerouted > 0;
     nearest_invalid += !nearest_ok;
     max_passes = std::max(max_passes, report.passes);
     if (report.max_move_relative > max_relative) {
@@ -155,9 +158,9 @@ TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
     EXPECT_GT(nearest_invalid, 0) << "rounding to nearest was valid everywhere: the test tells nothing";
   }
   std::printf("rounded %d shared meshes with intersections: %d needed more than one pass (at most %d), %d a "
-              "coarser grid (%d the last resort), %d were invalid rounded to nearest; largest move / bounding-box "
+              "coarser grid (%d rounding per vertex), %d were rerouted, %d were invalid rounded to nearest; largest move / bounding-box "
               "diagonal %.3g (%s)\n",
-              rounded, more_than_one_pass, max_passes, coarser_grid, last_resort, nearest_invalid, max_relative,
+              rounded, more_than_one_pass, max_passes, coarser_grid, last_resort, rerouted, nearest_invalid, max_relative,
               max_relative_mesh.c_str());
 }
 
@@ -198,6 +201,34 @@ TEST(RoundSafe, TwoCopiesRotatedByPiNeedTheLastResort) {
     EXPECT_LE(report.max_move_relative, 1e-12) << name;
     std::printf("%s: %d passes, %zu vertices on coarser grids (coarsest %.3g), largest move / diagonal %.3g\n",
                 name.c_str(), report.passes, report.coarsened, report.grid, report.max_move_relative);
+  }
+}
+
+TEST(RoundSafe, EmberPairsAreReroutedAtTheirSlivers) {
+  // Two operands placed in contact by transforms rounded to doubles: the exact arrangement
+  // has about 1,500 slivers whose apex lies within an ulp of the opposite edge. Rounded to
+  // nearest they fold over their neighbours; the passes of rounding and arranging make new
+  // ones at every level. Rerouting (round_rerouting.h) settles them with every vertex at
+  // its nearest double: nothing on a coarser grid, the surface moved by an ulp at most.
+  const fs::path script = tritri_test::shared_meshes_dir().parent_path() / "tools" / "make_ember_pairs.py";
+  TRITRI_REQUIRE_DATA(script);
+  tritri_test::TempDir tmp;
+  const std::string command = "python3 '" + script.string() + "' '" + tmp.path().string() + "' > /dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  std::vector<std::string> names{"ember-1063852-72214", "ember-88566-58011"};
+  if (tritri_test::test_scale() < 1) names.resize(1);
+  for (const std::string& name : names) {
+    const ArrangeResult first = arrange(load_triangle_soup((tmp.path() / (name + ".off")).string()), ArrangeOptions{});
+    ASSERT_GT(first.stats.intersection_points, 0u) << name;
+    bool nearest_ok = true;
+    const RoundReport report = expect_safe_rounding(first.mesh, name, nearest_ok);
+    EXPECT_FALSE(nearest_ok) << name;
+    EXPECT_GT(report.rerouted, 0u) << name << ": the passes alone settled it; the test tells nothing";
+    EXPECT_EQ(report.coarsened, 0u) << name;
+    EXPECT_EQ(report.grid, 0) << name;
+    EXPECT_LE(report.max_move_relative, 1e-15) << name;
+    std::printf("%s: %d passes and rounds, %zu vertices put on an edge or a face, largest move / diagonal %.3g\n",
+                name.c_str(), report.passes, report.rerouted, report.max_move_relative);
   }
 }
 
