@@ -309,6 +309,7 @@ nb::dict safely_rounded_dict(Out&& out, int threads) {
   plain.stats.round_max_move = report.max_move;
   plain.stats.round_max_move_rel = report.max_move_relative;
   plain.stats.round_coarsened = report.coarsened;
+  plain.stats.round_rerouted = report.rerouted;
   std::vector<double> v(3 * rounded.vertices.size());
   for (std::size_t i = 0; i < rounded.vertices.size(); ++i)
     for (int c = 0; c < 3; ++c) v[3 * i + c] = rounded.vertices[i][c];

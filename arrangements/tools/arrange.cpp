@@ -59,9 +59,11 @@ options:
                           safe: rounded, re-arranged and rounded again until the rounded
                           mesh is itself an arrangement (its triangles meet only in shared
                           vertices and edges, decided exactly); if that does not
-                          settle, every vertex rounded on its own, to coarser grids only
-                          at the conflicts; provenance kept; exit status 4 if neither
-                          settles within 64 passes. Stats round_*
+                          settle, vertices kept at their nearest doubles and triangles
+                          rerouted through vertices within an ulp, then every vertex
+                          rounded on its own, to coarser grids only at the conflicts;
+                          provenance kept; exit status 4 if nothing settles within 64
+                          passes. Stats round_*
   --check                 verify the arrangement exactly: every pair of triangles with
                           overlapping boxes meets only in shared vertices and edges
                           (tritri on the implicit points; with --round safe, on the rounded
@@ -192,6 +194,7 @@ int main(int argc, char** argv) {
             s.round_max_move = report.max_move;
             s.round_max_move_rel = report.max_move_relative;
             s.round_coarsened = report.coarsened;
+            s.round_rerouted = report.rerouted;
             add_write_time(s, seconds_since(tr));
           }
           if (output) {

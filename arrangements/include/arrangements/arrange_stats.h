@@ -52,6 +52,7 @@ struct ArrangeStats {
   int round_passes = 0;  // filled by the caller that rounds (round_mesh.h), else 0
   double round_max_move = 0, round_max_move_rel = 0;
   std::size_t round_coarsened = 0;
+  std::size_t round_rerouted = 0;
 };
 
 // One row of the table.
@@ -118,7 +119,10 @@ inline constexpr auto kArrangeStats = std::make_tuple(
     stat_entry("round_max_move_rel", &ArrangeStats::round_max_move_rel, -3,
                "round_max_move divided by the diagonal of the bounding box"),
     stat_entry("round_coarsened", &ArrangeStats::round_coarsened, 0,
-               "--round safe: vertices its last resort moved to a coarser grid (0 unless the passes failed)"));
+               "--round safe: vertices its last resort moved to a coarser grid (0 unless the passes failed)"),
+    stat_entry("round_rerouted", &ArrangeStats::round_rerouted, 0,
+               "--round safe: vertices its last resort put on a nearby edge or face, each staying at its "
+               "nearest double (0 unless the passes failed)"));
 
 // The keys and meanings alone, in order.
 struct StatKey {

@@ -35,8 +35,15 @@
 //   from a point of the previous pass's surface; report->max_move sums the largest move
 //   of each pass of the successful level (bounded from exact coordinate differences), so
 //   every vertex of the result lies within it of the exact arrangement's surface.
-//   Last resort (when the levels fail): rounding per vertex, without arranging again
-//   (src/round_per_vertex.h). Every vertex of the exact arrangement goes to the nearest
+//   Last resorts (when the levels fail), without arranging again, so without new points:
+//   First, rerouting (src/round_rerouting.h): every vertex stays at its nearest double;
+//   slivers whose apex lies within an ulp of the opposite edge collapse onto it, and of
+//   each violating pair the vertex within an ulp of the other's edge or face is put on it
+//   (the triangles there split through it: snap rounding's hot-pixel rule); each round
+//   checks the result exactly. This settles operands placed in contact by transforms
+//   rounded to doubles (the EMBER pairs), with the surface moved by an ulp at most.
+//   Then, rounding per vertex (src/round_per_vertex.h), from the arrangement's triangles,
+//   then from the rerouted ones. Every vertex of the exact arrangement goes to the nearest
 //   double; each round checks the rounded mesh exactly (check_arrangement) and moves the
 //   vertices of every violating pair, and only those, to the next coarser uniform grid
 //   (2^(2j) ulps of L, j <= 16); vertices that land on one position become one, collapsed
@@ -45,17 +52,17 @@
 //   passes can where layers cross at grazing angles (two copies of a sphere rotated by pi,
 //   odd number of meridians): there it settles with a few vertices a few ulps off.
 //   Termination: the passes have no proof (3D snap rounding with a proven bound needs a
-//   grid far coarser than doubles): at most kLevels x 4 = 20 of them. The last resort
-//   terminates by construction (each failed round raises a bounded level of some vertex)
+//   grid far coarser than doubles): at most kLevels x 4 = 20 of them. Rerouting stops
+//   after 3 rounds without fewer violations. Rounding per vertex terminates by construction (each failed round raises a bounded level of some vertex)
 //   and gives up after two rounds without fewer violations, at a vertex needing more than
 //   2^32 ulps, or when options.max_passes (passes and rounds together) is reached. What is
 //   measured (tests/test_round_safe.cpp: every shared mesh with intersections, MCUT and
 //   EMBER pairs, rotated copies) is given in the tests' output.
 //   Known failures (RoundingError): surfaces that nearly coincide over whole faces,
 //   triangulated differently (three copies of a sphere rotated by 2 pi / 3, whose vertices
-//   coincide to 1e-16; the EMBER pairs of the shared data, whose operands share faces up
-//   to the rounding of their transforms): at every level the rounded layers cross again in
-//   as many places, and coarsening the conflicts only spreads them. The exact output
+//   coincide to 1e-16): at every level the rounded layers cross again in as many places,
+//   their conflicts are not within an ulp of a feature, and coarsening them only spreads
+//   them. The exact output
 //   (--exact) is always available.
 //   Provenance is kept: a triangle of the result lies in (the rounded image of) the input
 //   triangle `source` names, with the union of labels of every input triangle covering it;
@@ -67,7 +74,7 @@
 // do not converge within options.max_passes (or a vertex rounds beyond the double range).
 // Cost: round_nearest: one exact rounding per implicit vertex. round_safe: per pass one
 // rounding and one run of the pipeline on the rounded mesh (about the time of arranging a
-// clean mesh of that size); per round of the last resort one check_arrangement.
+// clean mesh of that size); per round of a last resort one check_arrangement.
 #pragma once
 
 #include <cstddef>
@@ -89,8 +96,8 @@ struct RoundReport {
   double grid = 0;                  // 0: rounded to nearest doubles (level 0); else the
                                     // spacing of the uniform grid of the level that succeeded
                                     // (the last resort: of the coarsest grid it used)
-  std::size_t coarsened = 0;        // vertices the last resort rounded to a coarser grid
-  std::size_t rerouted = 0;         // vertices the last resort put on an edge or a face
+  std::size_t coarsened = 0;        // vertices rounding per vertex put on a coarser grid
+  std::size_t rerouted = 0;         // vertices rerouting put on an edge or a face
                                     // (0 when the passes succeeded)
 };
 
