@@ -12,6 +12,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <random>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -81,6 +83,40 @@ TEST(Arrangement, IndependentCheckRefusesBadMeshes) {
   m.vertices = pts;
   m.triangles = {{0, 1, 2}, {0, 1, 3}};
   EXPECT_FALSE(check_arrangement(m).ok());
+}
+
+// check_arrangement_touching finds exactly the violations of check_arrangement that have a
+// marked triangle: random soups (crossing, touching, sharing vertices), random marks.
+TEST(Arrangement, CheckTouchingIsTheFullCheckRestrictedToTheMarks) {
+  std::mt19937 rng(14);
+  std::uniform_real_distribution<double> coordinate(0.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    RoundedMesh m;
+    for (int v = 0; v < 60; ++v) m.vertices.push_back({coordinate(rng), coordinate(rng), coordinate(rng) / 8});
+    std::uniform_int_distribution<int> vertex(0, 59);
+    while (m.triangles.size() < 40) {
+      const Tri f{vertex(rng), vertex(rng), vertex(rng)};
+      if (f[0] != f[1] && f[1] != f[2] && f[0] != f[2]) m.triangles.push_back(f);
+    }
+    m.source.assign(m.triangles.size(), 0);
+    m.label_set.assign(m.triangles.size(), 0);
+    m.label_sets = {{0}};
+    const ArrangementCheck full = check_arrangement(m, 0);
+    ASSERT_GT(full.violations, 0u) << trial;
+    std::vector<char> marked(m.triangles.size());
+    for (char& c : marked) c = rng() % 4 == 0;
+    std::vector<std::pair<int, int>> expected;
+    for (const auto& [i, j] : full.violating_pairs)
+      if (marked[i] || marked[j]) expected.emplace_back(i, j);
+    const ArrangementCheck part = check_arrangement_touching(m, marked, 0);
+    EXPECT_EQ(part.violating_pairs, expected) << trial;
+    EXPECT_LE(part.pairs_checked, full.pairs_checked) << trial;
+    EXPECT_EQ(check_arrangement_touching(m, std::vector<char>(m.triangles.size(), 1), 0).violating_pairs,
+              full.violating_pairs)
+        << trial;
+    EXPECT_TRUE(check_arrangement_touching(m, std::vector<char>(m.triangles.size(), 0), 0).ok()) << trial;
+  }
+  EXPECT_THROW(check_arrangement_touching(RoundedMesh{}, std::vector<char>(1), 0), std::invalid_argument);
 }
 
 // Every shared mesh up to a size limit, both classifiers.

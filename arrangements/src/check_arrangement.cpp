@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <stdexcept>
+#include <string>
 
 #include <tritri/classify.h>
 #include <tritri/implicit_kernel.h>
@@ -42,11 +44,13 @@ std::string points_of(const tritri::Result& r) {
   return s;
 }
 
-// The check on points P (kernel K) with conservative boxes [lo, hi] per vertex.
+// The check on points P (kernel K) with conservative boxes [lo, hi] per vertex; with
+// `changed`, only the pairs with a triangle marked in it.
 template <class K, class Mesh>
 ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Point>& P,
                               const std::vector<std::array<double, 3>>& lo,
-                              const std::vector<std::array<double, 3>>& hi, std::size_t max_reported) {
+                              const std::vector<std::array<double, 3>>& hi, std::size_t max_reported,
+                              const std::vector<char>* changed = nullptr) {
   ArrangementCheck out;
   const auto& F = mesh.triangles;
   std::vector<Box> boxes;
@@ -60,12 +64,26 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     boxes.emplace_back(CGAL::Bbox_3(l[0], l[1], l[2], h[0], h[1], h[2]), static_cast<int>(t));
   }
   std::vector<std::pair<int, int>> pairs;
-  CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
-      boxes.begin(), boxes.end(),
-      [&](const Box& a, const Box& b) {
-        pairs.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info()));
-      },
-      CGAL::Box_intersection_d::Box_traits_d<Box>(), 10, CGAL::Box_intersection_d::CLOSED);
+  if (changed) {
+    // The changed boxes against all: a pair of two changed triangles is found twice, keep one.
+    std::vector<Box> marked;
+    for (const Box& b : boxes)
+      if ((*changed)[b.info()]) marked.push_back(b);
+    CGAL::box_intersection_d<CGAL::Sequential_tag>(
+        marked.begin(), marked.end(), boxes.begin(), boxes.end(),
+        [&](const Box& a, const Box& b) {
+          if (a.info() == b.info() || ((*changed)[b.info()] && b.info() < a.info())) return;
+          pairs.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info()));
+        },
+        CGAL::Box_intersection_d::Box_traits_d<Box>(), 10, CGAL::Box_intersection_d::CLOSED);
+  } else {
+    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
+        boxes.begin(), boxes.end(),
+        [&](const Box& a, const Box& b) {
+          pairs.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info()));
+        },
+        CGAL::Box_intersection_d::Box_traits_d<Box>(), 10, CGAL::Box_intersection_d::CLOSED);
+  }
   std::sort(pairs.begin(), pairs.end());
   out.pairs_checked = pairs.size();
 
@@ -77,6 +95,7 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     if (out.examples.size() < max_reported) out.examples.push_back(std::move(msg));
   };
   tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
+    if (changed && !(*changed)[t]) return;
     const Tri& f = F[t];
     bool degenerate = f[0] == f[1] || f[1] == f[2] || f[0] == f[2];
     if (!degenerate) degenerate = tritri::projection(K{}, P[f[0]], P[f[1]], P[f[2]]).second == 0;
@@ -148,11 +167,27 @@ ArrangementCheck check_arrangement(const ExactOutputMesh& mesh, std::size_t max_
   return check_points<ExactModel::Kernel>(mesh, P, lo, hi, max_reported);
 }
 
-ArrangementCheck check_arrangement(const RoundedMesh& mesh, std::size_t max_reported) {
+namespace {
+
+ArrangementCheck check_rounded(const RoundedMesh& mesh, std::size_t max_reported, const std::vector<char>* changed) {
   std::vector<tritri::ImplicitPoint> P(mesh.vertices.size());
   for (std::size_t v = 0; v < P.size(); ++v) P[v] = tritri::ImplicitPoint::explicit_point(mesh.vertices[v]);
   // Doubles are their own exact boxes.
-  return check_points<tritri::ImplicitKernel>(mesh, P, mesh.vertices, mesh.vertices, max_reported);
+  return check_points<tritri::ImplicitKernel>(mesh, P, mesh.vertices, mesh.vertices, max_reported, changed);
+}
+
+}  // namespace
+
+ArrangementCheck check_arrangement(const RoundedMesh& mesh, std::size_t max_reported) {
+  return check_rounded(mesh, max_reported, nullptr);
+}
+
+ArrangementCheck check_arrangement_touching(const RoundedMesh& mesh, const std::vector<char>& changed,
+                                            std::size_t max_reported) {
+  if (changed.size() != mesh.triangles.size())
+    throw std::invalid_argument("check_arrangement_touching: " + std::to_string(changed.size()) + " marks for " +
+                                std::to_string(mesh.triangles.size()) + " triangles");
+  return check_rounded(mesh, max_reported, &changed);
 }
 
 }  // namespace arrangements

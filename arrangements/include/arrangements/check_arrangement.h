@@ -38,4 +38,11 @@ ArrangementCheck check_arrangement(const OutputMesh& mesh, std::size_t max_repor
 ArrangementCheck check_arrangement(const ExactOutputMesh& mesh, std::size_t max_reported = 10);
 ArrangementCheck check_arrangement(const RoundedMesh& mesh, std::size_t max_reported = 10);
 
+// The same check restricted to the pairs (and degenerate triangles) with a triangle marked
+// in `changed` (one mark per triangle, else std::invalid_argument): after a local change
+// to a mesh whose other pairs were checked before. Cost: one box search of the marked
+// triangles against all, plus one classification per overlapping pair found.
+ArrangementCheck check_arrangement_touching(const RoundedMesh& mesh, const std::vector<char>& changed,
+                                            std::size_t max_reported = 10);
+
 }  // namespace arrangements
