@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <map>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -18,6 +17,7 @@
 
 #include "models/double_model.h"
 #include "models/exact_model.h"
+#include "support/label_set_table.h"
 
 namespace arrangements {
 namespace {
@@ -172,13 +172,8 @@ BasicTriangleSoup<typename M::Vertex> preprocess(const BasicTriangleSoup<typenam
   BasicTriangleSoup<Vertex> out;
   std::vector<int> out_vertex(positions.size(), -1);
   std::vector<int> out_set_of_input_set(in.label_sets.size(), -1);
-  std::map<LabelSet, int> out_set_by_content;  // equal sets are stored once
-  auto out_set_of = [&](LabelSet labels) {
-    const int next = static_cast<int>(out.label_sets.size());
-    const auto [it, inserted] = out_set_by_content.try_emplace(std::move(labels), next);
-    if (inserted) out.label_sets.push_back(it->first);
-    return it->second;
-  };
+  LabelSetTable out_sets(out.label_sets);  // equal sets are stored once
+  auto out_set_of = [&](LabelSet labels) { return out_sets.index_of(std::move(labels)); };
   out.triangles.reserve(kept.size());
   out.label_set.reserve(kept.size());
   for (std::size_t t = 0; t < kept.size(); ++t) {

@@ -5,12 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numeric>
 
 #include "models/double_model.h"
 #include "models/exact_model.h"
 #include "stages/5_triangulate_triangle.h"
+#include "support/label_set_table.h"
 
 namespace arrangements {
 
@@ -107,8 +107,7 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
   out.label_set.reserve(out_triangles);
   out.vertices.reserve(g.points.size() + new_tpis.size());
   out.label_sets = soup.label_sets;
-  std::map<LabelSet, int> label_index;
-  for (std::size_t i = 0; i < out.label_sets.size(); ++i) label_index.emplace(out.label_sets[i], static_cast<int>(i));
+  LabelSetTable label_table(out.label_sets);
   for (std::size_t t = 0; t < nF; ++t) {
     const int ti = static_cast<int>(t);
     if (!busy[t]) {
@@ -125,9 +124,7 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
       }
       std::sort(merged.begin(), merged.end());
       merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
-      auto [it, fresh] = label_index.emplace(merged, static_cast<int>(out.label_sets.size()));
-      if (fresh) out.label_sets.push_back(merged);
-      cover_labels[c] = it->second;
+      cover_labels[c] = label_table.index_of(std::move(merged));
     }
     for (std::size_t k = 0; k < p.triangles.size(); ++k) {
       Tri tr = p.triangles[k];

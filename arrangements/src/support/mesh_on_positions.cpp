@@ -9,6 +9,8 @@
 #include <tritri/double_kernel.h>
 #include <tritri/projection.h>
 
+#include "support/label_set_table.h"
+
 namespace arrangements {
 namespace {
 
@@ -34,8 +36,7 @@ MeshOnPositions mesh_on_positions(const std::vector<Vec3>& position, const std::
 
   MeshOnPositions c;
   c.mesh.label_sets = label_sets;
-  std::map<LabelSet, int> set_index;
-  for (std::size_t s = 0; s < label_sets.size(); ++s) set_index.emplace(label_sets[s], static_cast<int>(s));
+  LabelSetTable sets(c.mesh.label_sets);
   std::vector<int> index(nv, -1);
   std::map<Tri, int> kept;  // sorted corners -> triangle of the result
   for (std::size_t t = 0; t < triangles.size(); ++t) {
@@ -50,10 +51,7 @@ MeshOnPositions mesh_on_positions(const std::vector<Vec3>& position, const std::
     if (!inserted) {
       // The same face twice: once, covered by the labels of both.
       int& s = c.mesh.label_set[it->second];
-      const LabelSet u = label_union(c.mesh.label_sets[s], label_sets[label_set[t]]);
-      const auto [u_it, added] = set_index.emplace(u, static_cast<int>(c.mesh.label_sets.size()));
-      if (added) c.mesh.label_sets.push_back(u);
-      s = u_it->second;
+      s = sets.index_of(label_union(c.mesh.label_sets[s], label_sets[label_set[t]]));
       continue;
     }
     for (int& i : f) {
