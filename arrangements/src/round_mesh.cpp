@@ -20,17 +20,14 @@
 #include "round_rerouting.h"
 #include "support/mesh_on_positions.h"
 #include "support/rounding_grid.h"
+#include "support/vertex_coordinates.h"
 
 namespace arrangements {
 namespace {
 
-// The exact coordinates of a vertex (rationals), and whether it is a double already.
-bool is_double(const tritri::ImplicitPoint& p) { return p.is_explicit(); }
-bool is_double(const ExactVec3&) { return false; }  // decided by rounding: it moves by 0
-ExactVec3 exact_coordinates(const tritri::ImplicitPoint& p) { return tritri::to_exact(p); }
-const ExactVec3& exact_coordinates(const ExactVec3& p) { return p; }
-Vec3 double_coordinates(const tritri::ImplicitPoint& p) { return p.approx(); }  // explicit points only
-Vec3 double_coordinates(const ExactVec3&) { return {}; }                         // never asked
+// The coordinates of a vertex that is a double already (is_double): explicit points only.
+Vec3 double_coordinates(const tritri::ImplicitPoint& p) { return p.approx(); }
+Vec3 double_coordinates(const ExactVec3&) { return {}; }  // never asked
 
 // Rounding levels: level 0 rounds to the nearest double; level j >= 1 to the uniform grid of
 // spacing 2^(8j) units in the last place of the largest coordinate magnitude. A uniform grid,
@@ -56,7 +53,7 @@ RoundedMesh round_mesh(const Mesh& mesh, double h, double snap, double& max_move
     fixed[v] = is_double(mesh.vertices[v]);
     if (!fixed[v]) exact[v] = exact_coordinates(mesh.vertices[v]);
   });
-  auto nearest_double = [&](std::size_t v) {
+  auto nearest_of = [&](std::size_t v) {
     return fixed[v] ? double_coordinates(mesh.vertices[v]) : tritri::to_double(exact[v]);
   };
   // The nearest double vertex within `snap` of each other vertex. Candidates from a grid of
@@ -78,7 +75,7 @@ RoundedMesh round_mesh(const Mesh& mesh, double h, double snap, double& max_move
     const CGAL::Gmpq limit = CGAL::Gmpq(snap) * CGAL::Gmpq(snap);
     tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t i) {
       if (fixed[i]) return;
-      const Key k = key_of(nearest_double(i));
+      const Key k = key_of(nearest_of(i));
       CGAL::Gmpq best;
       for (long long dx = -1; dx <= 1; ++dx)
         for (long long dy = -1; dy <= 1; ++dy)
@@ -109,7 +106,7 @@ RoundedMesh round_mesh(const Mesh& mesh, double h, double snap, double& max_move
       move[v] = distance_bound(exact[v], double_coordinates(mesh.vertices[target[v]]));
       return;
     }
-    position[v] = round_point(nearest_double(v), h);
+    position[v] = round_point(nearest_of(v), h);
     for (double c : position[v])
       if (!std::isfinite(c))
         throw RoundingError("round: vertex " + std::to_string(v) + " rounds beyond the double range");

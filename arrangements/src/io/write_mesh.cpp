@@ -23,6 +23,7 @@
 #include "io/mesh_file_checks.h"
 #include "io/mesh_format.h"
 #include "io/write_off.h"
+#include "support/vertex_coordinates.h"
 
 namespace arrangements {
 namespace {
@@ -88,14 +89,6 @@ void append_rational(AtomicFile& f, const CGAL::Gmpq& q, std::string& scratch) {
     append_mpz(f, mpq_denref(q.mpq()), scratch);
   }
 }
-
-std::array<CGAL::Gmpq, 3> exact_coordinates(const tritri::ImplicitPoint& p) { return tritri::to_exact(p); }
-const ExactVec3& exact_coordinates(const ExactVec3& p) { return p; }
-ExactVec3 exact_coordinates(const Vec3& p) { return to_exact(p); }
-
-Vec3 nearest_double(const tritri::ImplicitPoint& p) { return tritri::to_double(p); }
-Vec3 nearest_double(const ExactVec3& p) { return tritri::to_double(p); }
-const Vec3& nearest_double(const Vec3& p) { return p; }
 
 // The vertex coordinates as doubles (correctly rounded), refusing those that overflow.
 template <class Mesh>
