@@ -132,7 +132,8 @@ TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
   const double scale = tritri_test::test_scale();
   const std::size_t every = scale < 1 ? static_cast<std::size_t>(std::lround(1 / scale)) : 1;
   std::size_t index = 0;
-  int rounded = 0, more_than_one_pass = 0, coarser_grid = 0, last_resort = 0, rerouted = 0, nearest_invalid = 0, max_passes = 0;
+  int rounded = 0, more_than_one_pass = 0, coarser_grid = 0, last_resort = 0, rerouted = 0, nearest_invalid = 0;
+  int max_passes = 0;
   double max_relative = 0;
   std::string max_relative_mesh;
   tritri_test::for_each_loadable_mesh(dir, [&](const fs::path& f, const TriangleSoup& input) {
@@ -158,7 +159,8 @@ TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
     EXPECT_GT(nearest_invalid, 0) << "rounding to nearest was valid everywhere: the test tells nothing";
   }
   std::printf("rounded %d shared meshes with intersections: %d needed more than one pass (at most %d), %d a "
-              "coarser grid (%d rounding per vertex), %d were rerouted, %d were invalid rounded to nearest; largest move / bounding-box "
+              "coarser grid (%d rounding per vertex), %d were rerouted, %d were invalid rounded to nearest; largest "
+              "move / bounding-box "
               "diagonal %.3g (%s)\n",
               rounded, more_than_one_pass, max_passes, coarser_grid, last_resort, rerouted, nearest_invalid, max_relative,
               max_relative_mesh.c_str());

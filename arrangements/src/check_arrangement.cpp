@@ -63,30 +63,6 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     }
     boxes.emplace_back(CGAL::Bbox_3(l[0], l[1], l[2], h[0], h[1], h[2]), static_cast<int>(t));
   }
-  std::vector<std::pair<int, int>> pairs;
-  if (changed) {
-    // The changed boxes against all: a pair of two changed triangles is found twice, keep one.
-    std::vector<Box> marked;
-    for (const Box& b : boxes)
-      if ((*changed)[b.info()]) marked.push_back(b);
-    CGAL::box_intersection_d<CGAL::Sequential_tag>(
-        marked.begin(), marked.end(), boxes.begin(), boxes.end(),
-        [&](const Box& a, const Box& b) {
-          if (a.info() == b.info() || ((*changed)[b.info()] && b.info() < a.info())) return;
-          pairs.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info()));
-        },
-        CGAL::Box_intersection_d::Box_traits_d<Box>(), 10, CGAL::Box_intersection_d::CLOSED);
-  } else {
-    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
-        boxes.begin(), boxes.end(),
-        [&](const Box& a, const Box& b) {
-          pairs.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info()));
-        },
-        CGAL::Box_intersection_d::Box_traits_d<Box>(), 10, CGAL::Box_intersection_d::CLOSED);
-  }
-  std::sort(pairs.begin(), pairs.end());
-  out.pairs_checked = pairs.size();
-
   std::mutex m;
   auto report = [&](std::size_t& counter, std::string msg, int i = -1, int j = -1) {
     std::lock_guard<std::mutex> lock(m);
@@ -101,8 +77,7 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     if (!degenerate) degenerate = tritri::projection(K{}, P[f[0]], P[f[1]], P[f[2]]).second == 0;
     if (degenerate) report(out.degenerate_triangles, "triangle " + std::to_string(t) + " is degenerate");
   });
-  tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
-    const auto [i, j] = pairs[k];
+  auto classify_pair = [&](int i, int j) {
     const Tri& a = F[i];
     const Tri& b = F[j];
     int shared = 0;
@@ -135,7 +110,40 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     }
     if (r.segments.size() != (shared == 2 ? 1u : 0u))
       report(out.violations, describe(mesh, i, j, "unexpected intersection segments"), i, j);
-  });
+  };
+  // Overlapping pairs are classified in batches as the box search finds them: the list of
+  // all of them can be far larger than the mesh (52M pairs for 42K triangles).
+  constexpr std::size_t kBatch = std::size_t{1} << 20;
+  std::vector<std::pair<int, int>> pairs;
+  pairs.reserve(std::min(kBatch, 16 * F.size() + 16));
+  auto flush = [&] {
+    tbb::parallel_for(std::size_t{0}, pairs.size(),
+                      [&](std::size_t k) { classify_pair(pairs[k].first, pairs[k].second); });
+    out.pairs_checked += pairs.size();
+    pairs.clear();
+  };
+  auto found = [&](int a, int b) {
+    pairs.emplace_back(std::min(a, b), std::max(a, b));
+    if (pairs.size() == kBatch) flush();
+  };
+  if (changed) {
+    // The changed boxes against all: a pair of two changed triangles is found twice, keep one.
+    std::vector<Box> marked;
+    for (const Box& b : boxes)
+      if ((*changed)[b.info()]) marked.push_back(b);
+    CGAL::box_intersection_d<CGAL::Sequential_tag>(
+        marked.begin(), marked.end(), boxes.begin(), boxes.end(),
+        [&](const Box& a, const Box& b) {
+          if (a.info() == b.info() || ((*changed)[b.info()] && b.info() < a.info())) return;
+          found(a.info(), b.info());
+        },
+        CGAL::Box_intersection_d::Box_traits_d<Box>(), 10, CGAL::Box_intersection_d::CLOSED);
+  } else {
+    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
+        boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) { found(a.info(), b.info()); },
+        CGAL::Box_intersection_d::Box_traits_d<Box>(), 10, CGAL::Box_intersection_d::CLOSED);
+  }
+  flush();
   std::sort(out.violating_pairs.begin(), out.violating_pairs.end());
   return out;
 }

@@ -273,10 +273,11 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       }
   }
   throw RoundingError("round_safe: the rounded mesh still has " + std::to_string(last_intersecting) +
-                      " intersecting pairs after " + std::to_string(r.passes) +
-                      " passes of rounding and arranging; rerouting and rounding per vertex did not settle it either (the latter stops "
-                      "after two rounds without fewer conflicts, at a grid of 2^32 ulps, or at " +
-                      std::to_string(options.max_passes) + " passes in all)");
+                      " intersecting pairs after the passes of rounding and arranging, and neither rerouting "
+                      "(it stops after 3 rounds without fewer violations) nor rounding per vertex (after two "
+                      "rounds without fewer conflicts, or at a grid of 2^32 ulps) settled it; " +
+                      std::to_string(r.passes) + " passes and rounds in all (at most " +
+                      std::to_string(options.max_passes) + ")");
 }
 
 }  // namespace

@@ -206,7 +206,8 @@ std::size_t reroute_round(RoundedMesh& m, const std::vector<std::pair<int, int>>
       for (std::size_t c = 0; c + 1 < chain.size(); ++c) {
         add(chain[c], chain[c + 1], apex, t);
         const int piece = static_cast<int>(m.triangles.size()) - 1;
-        for (int j = 0; j < 3; ++j) on_edge[edge_key(m.triangles[piece][j], m.triangles[piece][(j + 1) % 3])].push_back(piece);
+        const Tri& g = m.triangles[piece];
+        for (int j = 0; j < 3; ++j) on_edge[edge_key(g[j], g[(j + 1) % 3])].push_back(piece);
       }
     }
   }

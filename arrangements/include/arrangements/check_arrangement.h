@@ -13,7 +13,9 @@
 // Returns the violations (described up to max_reported, all counted; every violating pair
 // of triangles listed). Exact. Cost: one box
 // self-intersection search plus one exact classification per overlapping pair (the
-// filters make most of them as cheap as double arithmetic); parallel (TBB).
+// filters make most of them as cheap as double arithmetic); parallel (TBB). Memory: the
+// boxes plus batches of 2^20 pairs (classified as the search finds them), whatever the
+// number of overlapping pairs.
 #pragma once
 
 #include <cstddef>
