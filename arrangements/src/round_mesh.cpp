@@ -242,10 +242,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       return rounded;
     };
     if (rerouting.violations == 0) {
-      std::vector<double> move(exact.size());
-      tbb::parallel_for(std::size_t{0}, exact.size(),
-                        [&](std::size_t v) { move[v] = distance_bound(exact[v], nearest_positions[v]); });
-      const double vertex_move = move.empty() ? 0.0 : *std::max_element(move.begin(), move.end());
+      const double vertex_move = largest_distance(exact, nearest_positions);
       return settled(mesh_on_positions(nearest_positions, rerouting.triangles, rerouting.source, rerouting.label_set,
                                        rerouting.label_sets)
                          .mesh,
@@ -254,8 +251,8 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     // Rounding per vertex from the arrangement's triangles, then from the rerouted ones.
     auto per_vertex = [&](const std::vector<Tri>& triangles, const std::vector<std::int64_t>& source,
                           const std::vector<int>& label_set, const std::vector<LabelSet>& label_sets) {
-      std::optional<PerVertexRounding> per = round_per_vertex(exact, nearest_positions, triangles, source, label_set,
-                                                              label_sets, options.max_passes - r.passes);
+      std::optional<PerVertexRounding> per = round_per_vertex(
+          exact, nearest_positions, triangles, source, label_set, label_sets, largest, options.max_passes - r.passes);
       r.passes += per ? per->rounds : 0;
       return per;
     };

@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <cstddef>
 
-#include "arrangements/check_arrangement.h"
 #include "support/mesh_on_positions.h"
 #include "support/rounding_grid.h"
+#include "support/violation_tracker.h"
 
 namespace arrangements {
 namespace {
@@ -24,11 +24,10 @@ std::optional<PerVertexRounding> round_per_vertex(const std::vector<ExactVec3>& 
                                                   const std::vector<Vec3>& nearest, const std::vector<Tri>& triangles,
                                                   const std::vector<std::int64_t>& source,
                                                   const std::vector<int>& label_set,
-                                                  const std::vector<LabelSet>& label_sets, int max_rounds) {
+                                                  const std::vector<LabelSet>& label_sets, double largest,
+                                                  int max_rounds) {
   const std::size_t nv = nearest.size();
-  double largest = 0;
-  for (const Vec3& p : nearest)
-    for (double x : p) largest = std::max(largest, std::abs(x));
+  ViolationTracker tracker;  // only the vertices raised in a round move
   std::vector<int> level(nv, 0);
   std::vector<Vec3> position = nearest;
   PerVertexRounding out;
@@ -36,22 +35,20 @@ std::optional<PerVertexRounding> round_per_vertex(const std::vector<ExactVec3>& 
   int rounds_since_fewest = 0;
   for (int round = 1; round <= max_rounds; ++round) {
     MeshOnPositions c = mesh_on_positions(position, triangles, source, label_set, label_sets);
-    const ArrangementCheck check = check_arrangement(c.mesh, 0);
-    if (check.ok()) {
+    const std::vector<std::pair<int, int>> violating_pairs = tracker.violations(c.mesh);
+    if (violating_pairs.empty()) {
       out.mesh = std::move(c.mesh);
       out.rounds = round;
       const int top = *std::max_element(level.begin(), level.end());
       out.grid = top == 0 ? 0.0 : grid_spacing(largest, 2 * top);
       out.coarsened = static_cast<std::size_t>(std::count_if(level.begin(), level.end(), [](int j) { return j > 0; }));
-      std::vector<double> move(nv);
-      tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) { move[v] = distance_bound(exact[v], position[v]); });
-      out.max_move = nv == 0 ? 0.0 : *std::max_element(move.begin(), move.end());
+      out.max_move = largest_distance(exact, position);
       return out;
     }
     // Coarser grids that stop reducing the conflicts only spread them (layers that nearly
     // coincide over whole faces): give up rather than collapse the model.
-    if (check.violations < fewest) {
-      fewest = check.violations;
+    if (violating_pairs.size() < fewest) {
+      fewest = violating_pairs.size();
       rounds_since_fewest = 0;
     } else if (++rounds_since_fewest == kRoundsWithoutProgress) {
       return std::nullopt;
@@ -59,7 +56,7 @@ std::optional<PerVertexRounding> round_per_vertex(const std::vector<ExactVec3>& 
     // Every vertex of a violating pair goes to the next coarser grid, with every vertex that
     // shares its position (else they part again).
     std::vector<char> violating(c.mesh.vertices.size(), 0);
-    for (const auto& [i, j] : check.violating_pairs)
+    for (const auto& [i, j] : violating_pairs)
       for (int t : {i, j})
         for (int v : c.mesh.triangles[t]) violating[v] = 1;
     bool raised = false;

@@ -19,7 +19,8 @@
 // run out.
 // Displacement: a vertex moves by at most half a cell diagonal of its level from its
 // nearest double (reported exactly bounded, from the rationals).
-// Cost per round: one sort of the vertices and one check_arrangement of the rounded mesh.
+// Cost per round: one sort of the vertices and one check of the rounded mesh (support/
+// violation_tracker.h: after the first round, only the pairs with a triangle that moved).
 #pragma once
 
 #include <optional>
@@ -38,11 +39,13 @@ struct PerVertexRounding {
 };
 
 // exact: every vertex of the exact arrangement; nearest: the same rounded to the nearest
-// double; triangles, source, label_set, label_sets: the arrangement's (output_mesh.h).
+// double; triangles, source, label_set, label_sets: the arrangement's (output_mesh.h);
+// largest: the largest coordinate magnitude of `nearest` (the grids are its ulps).
 std::optional<PerVertexRounding> round_per_vertex(const std::vector<ExactVec3>& exact,
                                                   const std::vector<Vec3>& nearest, const std::vector<Tri>& triangles,
                                                   const std::vector<std::int64_t>& source,
                                                   const std::vector<int>& label_set,
-                                                  const std::vector<LabelSet>& label_sets, int max_rounds);
+                                                  const std::vector<LabelSet>& label_sets, double largest,
+                                                  int max_rounds);
 
 }  // namespace arrangements

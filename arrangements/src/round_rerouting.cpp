@@ -12,8 +12,8 @@
 #include <optional>
 #include <unordered_map>
 
-#include "arrangements/check_arrangement.h"
 #include "support/mesh_on_positions.h"
+#include "support/violation_tracker.h"
 
 namespace arrangements {
 namespace {
@@ -61,16 +61,6 @@ std::optional<Q> near_face(const std::vector<Vec3>& P, int p, const Tri& f, cons
     if (!(dot(cross(minus(P[f[(k + 1) % 3]], P[f[k]]), minus(P[p], P[f[k]])), n) > 0)) return std::nullopt;
   return w * w / n2;
 }
-
-// A hash of a triangle's corners (sorted).
-struct CornersHash {
-  std::size_t operator()(const Tri& f) const {
-    std::uint64_t h = static_cast<std::uint32_t>(f[0]);
-    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(f[1]);
-    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(f[2]);
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  }
-};
 
 std::uint64_t edge_key(int a, int b) {
   if (a > b) std::swap(a, b);
@@ -235,41 +225,10 @@ Rerouting reroute_conflicts(const std::vector<Vec3>& position, const std::vector
   Rerouting best;
   best.violations = std::numeric_limits<std::size_t>::max();
   int rounds_since_best = 0;
-  // The previous round's triangles (corners over the input vertices, sorted) and its
-  // violating pairs of them: vertices never move, so a triangle found again is the same
-  // triangle, and only pairs with a new one need classifying.
-  std::unordered_map<Tri, int, CornersHash> previous;
-  std::vector<std::pair<Tri, Tri>> previous_violating;
+  ViolationTracker tracker;  // vertices never move: later rounds check only the new triangles
   for (int round = 1; round <= max_rounds; ++round) {
     MeshOnPositions c = mesh_on_positions(position, now.triangles, now.source, now.label_set, now.label_sets);
-    std::vector<int> input_of(c.mesh.vertices.size(), -1);  // one input vertex per position: the first
-    for (std::size_t v = c.vertex_of.size(); v-- > 0;)
-      if (c.vertex_of[v] >= 0) input_of[c.vertex_of[v]] = static_cast<int>(v);
-    const std::size_t nt = c.mesh.triangles.size();
-    std::vector<Tri> corners(nt);
-    for (std::size_t t = 0; t < nt; ++t) {
-      for (int k = 0; k < 3; ++k) corners[t][k] = input_of[c.mesh.triangles[t][k]];
-      std::sort(corners[t].begin(), corners[t].end());
-    }
-    std::vector<std::pair<int, int>> violating;
-    if (round == 1) {
-      violating = check_arrangement(c.mesh, 0).violating_pairs;
-    } else {
-      std::vector<char> changed(nt);
-      std::unordered_map<Tri, int, CornersHash> index;
-      for (std::size_t t = 0; t < nt; ++t) {
-        changed[t] = !previous.contains(corners[t]);
-        index.emplace(corners[t], static_cast<int>(t));
-      }
-      violating = check_arrangement_touching(c.mesh, changed, 0).violating_pairs;
-      for (const auto& [x, y] : previous_violating) {
-        const auto i = index.find(x), j = index.find(y);
-        if (i != index.end() && j != index.end())
-          violating.emplace_back(std::min(i->second, j->second), std::max(i->second, j->second));
-      }
-      std::sort(violating.begin(), violating.end());
-      violating.erase(std::unique(violating.begin(), violating.end()), violating.end());
-    }
+    const std::vector<std::pair<int, int>> violating = tracker.violations(c.mesh);
     best.rounds = round;
     if (violating.size() < best.violations) {
       const int rounds = best.rounds;
@@ -281,12 +240,11 @@ Rerouting reroute_conflicts(const std::vector<Vec3>& position, const std::vector
     } else if (++rounds_since_best == kRoundsWithoutProgress) {
       break;
     }
-    previous.clear();
-    for (std::size_t t = 0; t < nt; ++t) previous.emplace(corners[t], static_cast<int>(t));
-    previous_violating.clear();
-    for (const auto& [i, j] : violating) previous_violating.emplace_back(corners[i], corners[j]);
-
     now.rerouted += reroute_round(c.mesh, violating, round == 1, delta);
+    // Back to the input's vertices (one per position: the first).
+    std::vector<int> input_of(c.mesh.vertices.size(), -1);
+    for (std::size_t v = c.vertex_of.size(); v-- > 0;)
+      if (c.vertex_of[v] >= 0) input_of[c.vertex_of[v]] = static_cast<int>(v);
     for (Tri& f : c.mesh.triangles)
       for (int& v : f) v = input_of[v];
     now.triangles = std::move(c.mesh.triangles);

@@ -23,10 +23,10 @@
 // Termination: at most max_rounds rounds; it stops earlier after 3 rounds in a row without
 // fewer violations than the best round. What is left of the conflicts then is for
 // round_per_vertex (round_per_vertex.h), which starts from the best round's triangles.
-// Cost per round: one check (the first round: check_arrangement; later ones only the pairs
-// with a triangle the round before did not have: check_arrangement_touching, since the
-// vertices never move), exact distance tests (rationals of the doubles, after a double
-// filter) on the triangles of violating pairs, hash maps of the edges and triangles.
+// Cost per round: one check (support/violation_tracker.h: the first round every pair, later
+// ones only the pairs with a triangle the round before did not have), exact distance tests
+// (rationals of the doubles, after a double filter) on the triangles of violating pairs, a
+// hash map of the edges.
 #pragma once
 
 #include <cstdint>

@@ -4,6 +4,10 @@
 #pragma once
 
 #include <CGAL/Gmpq.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <vector>
 
 #include <cmath>
 #include <limits>
@@ -42,6 +46,14 @@ inline double distance_bound(const ExactVec3& q, const Vec3& p) {
   return sum == 0 ? 0.0
                   : std::nextafter(std::sqrt(sum) * (1 + 8 * std::numeric_limits<double>::epsilon()),
                                    std::numeric_limits<double>::infinity());
+}
+
+// The largest distance_bound between exact[v] and position[v] over all v (0 for none).
+inline double largest_distance(const std::vector<ExactVec3>& exact, const std::vector<Vec3>& position) {
+  std::vector<double> move(exact.size());
+  tbb::parallel_for(std::size_t{0}, exact.size(),
+                    [&](std::size_t v) { move[v] = distance_bound(exact[v], position[v]); });
+  return move.empty() ? 0.0 : *std::max_element(move.begin(), move.end());
 }
 
 }  // namespace arrangements
