@@ -180,7 +180,16 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   const RoundedMesh nearest = round_mesh(mesh, 0, 0, move);
   const double largest = largest_magnitude(nearest.vertices);
   const double ulp = level_spacing(largest, 1) / 256;
-  for (int level = 0; level < kLevels; ++level) {
+  auto finish = [&](RoundedMesh rounded, double max_move, double grid) {
+    r.grid = grid;
+    r.max_move = max_move;
+    const double diagonal = bounding_box_diagonal(rounded.vertices);
+    r.max_move_relative = diagonal > 0 ? r.max_move / diagonal : 0.0;
+    if (report) *report = r;
+    return rounded;
+  };
+  // The passes of one level; the rounded mesh when one of them settles it.
+  auto passes_at_level = [&](int level) -> std::optional<RoundedMesh> {
     // Each level starts again from the exact arrangement.
     const double h = level_spacing(largest, level);
     const double snap = level == 0 ? ulp : h;
@@ -190,14 +199,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     for (int pass = 1; pass <= kPassesPerLevel; ++pass) {
       ++r.passes;
       ArrangeResult again = arrange(as_input(rounded), arrange_options);
-      if (unchanged(again.stats)) {
-        r.max_move = level_move;
-        r.grid = h;
-        const double diagonal = bounding_box_diagonal(rounded.vertices);
-        r.max_move_relative = diagonal > 0 ? r.max_move / diagonal : 0.0;
-        if (report) *report = r;
-        return rounded;
-      }
+      if (unchanged(again.stats)) return finish(std::move(rounded), level_move, h);
       // A pass that does not reduce the intersections, or grows the mesh by more than a
       // tenth, means this grid keeps making features it cannot hold: go to the next level
       // (before the passes grow the mesh without bound).
@@ -208,66 +210,70 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       rounded = round_mesh(again.mesh, h, snap, move);
       level_move += move;
     }
-    if (r.passes >= options.max_passes) break;
-  }
+    return std::nullopt;
+  };
+  if (auto done = passes_at_level(0)) return *done;
+
   // The last resorts make no new points: vertices stay at their nearest doubles while
   // slivers collapse and edges and faces are rerouted through vertices within an ulp
-  // (round_rerouting.h); what that leaves, vertices on grids of their own, coarser only
-  // where needed (round_per_vertex.h). Arranging the result once more proves it.
+  // (round_rerouting.h), tried before the coarser levels because it moves the surface by
+  // an ulp only; what that leaves, after the coarser levels, vertices on grids of their
+  // own, coarser only where needed (round_per_vertex.h). Arranging the result once more
+  // proves it.
+  std::vector<ExactVec3> exact(mesh.vertices.size());
+  std::vector<Vec3> nearest_positions(exact.size());
+  tbb::parallel_for(std::size_t{0}, exact.size(), [&](std::size_t v) {
+    if (is_double(mesh.vertices[v])) {
+      nearest_positions[v] = double_coordinates(mesh.vertices[v]);
+      exact[v] = to_exact(nearest_positions[v]);
+    } else {
+      exact[v] = exact_coordinates(mesh.vertices[v]);
+      nearest_positions[v] = tritri::to_double(exact[v]);
+    }
+  });
+  auto settled = [&](RoundedMesh rounded, double max_move, double grid) {
+    if (!unchanged(arrange(as_input(rounded), arrange_options).stats))
+      throw RoundingError("round_safe: a last resort passed the check but arranging its result changed it");
+    return finish(std::move(rounded), max_move, grid);
+  };
+  Rerouting rerouting;
   if (r.passes < options.max_passes) {
-    std::vector<ExactVec3> exact(mesh.vertices.size());
-    std::vector<Vec3> nearest_positions(exact.size());
-    tbb::parallel_for(std::size_t{0}, exact.size(), [&](std::size_t v) {
-      if (is_double(mesh.vertices[v])) {
-        nearest_positions[v] = double_coordinates(mesh.vertices[v]);
-        exact[v] = to_exact(nearest_positions[v]);
-      } else {
-        exact[v] = exact_coordinates(mesh.vertices[v]);
-        nearest_positions[v] = tritri::to_double(exact[v]);
-      }
-    });
-    const Rerouting rerouting = reroute_conflicts(nearest_positions, mesh.triangles, mesh.source, mesh.label_set,
-                                                  mesh.label_sets, ulp, options.max_passes - r.passes);
+    rerouting = reroute_conflicts(nearest_positions, mesh.triangles, mesh.source, mesh.label_set, mesh.label_sets,
+                                  ulp, options.max_passes - r.passes);
     r.passes += rerouting.rounds;
-    r.rerouted = rerouting.rerouted;
-    // The surface of a rerouted triangle is within an ulp of the rounded one.
-    const double reroute_move = rerouting.rerouted > 0 ? ulp : 0.0;
-    auto settled = [&](RoundedMesh rounded, double max_move) {
-      if (!unchanged(arrange(as_input(rounded), arrange_options).stats))
-        throw RoundingError("round_safe: a last resort passed the check but arranging its result changed it");
-      r.max_move = max_move;
-      const double diagonal = bounding_box_diagonal(rounded.vertices);
-      r.max_move_relative = diagonal > 0 ? r.max_move / diagonal : 0.0;
-      if (report) *report = r;
-      return rounded;
-    };
     if (rerouting.violations == 0) {
-      const double vertex_move = largest_distance(exact, nearest_positions);
+      r.rerouted = rerouting.rerouted;
+      // The surface of a rerouted triangle is within an ulp of the rounded one.
+      const double reroute_move = rerouting.rerouted > 0 ? ulp : 0.0;
       return settled(mesh_on_positions(nearest_positions, rerouting.triangles, rerouting.source, rerouting.label_set,
                                        rerouting.label_sets)
                          .mesh,
-                     vertex_move + reroute_move);
+                     largest_distance(exact, nearest_positions) + reroute_move, 0.0);
     }
-    // Rounding per vertex from the arrangement's triangles, then from the rerouted ones.
+  }
+  for (int level = 1; level < kLevels && r.passes < options.max_passes; ++level)
+    if (auto done = passes_at_level(level)) return *done;
+
+  if (r.passes < options.max_passes) {
+    // Rounding per vertex from the arrangement's triangles, then from the rerouted ones
+    // (which are within an ulp of the rounded ones: extra_move).
     auto per_vertex = [&](const std::vector<Tri>& triangles, const std::vector<std::int64_t>& source,
-                          const std::vector<int>& label_set, const std::vector<LabelSet>& label_sets) {
+                          const std::vector<int>& label_set, const std::vector<LabelSet>& label_sets,
+                          double extra_move) -> std::optional<RoundedMesh> {
       std::optional<PerVertexRounding> per = round_per_vertex(
           exact, nearest_positions, triangles, source, label_set, label_sets, largest, options.max_passes - r.passes);
-      r.passes += per ? per->rounds : 0;
-      return per;
-    };
-    if (auto per = per_vertex(mesh.triangles, mesh.source, mesh.label_set, mesh.label_sets)) {
-      r.rerouted = 0;
-      r.grid = per->grid;
+      if (!per) return std::nullopt;
+      r.passes += per->rounds;
       r.coarsened = per->coarsened;
-      return settled(per->mesh, per->max_move);
+      return settled(per->mesh, per->max_move + extra_move, per->grid);
+    };
+    if (auto done = per_vertex(mesh.triangles, mesh.source, mesh.label_set, mesh.label_sets, 0.0)) return *done;
+    if (rerouting.rerouted > 0) {
+      r.rerouted = rerouting.rerouted;
+      if (auto done = per_vertex(rerouting.triangles, rerouting.source, rerouting.label_set, rerouting.label_sets, ulp))
+        return *done;
+      r.rerouted = 0;
     }
-    if (rerouting.rerouted > 0)
-      if (auto per = per_vertex(rerouting.triangles, rerouting.source, rerouting.label_set, rerouting.label_sets)) {
-        r.grid = per->grid;
-        r.coarsened = per->coarsened;
-        return settled(per->mesh, per->max_move + reroute_move);
-      }
   }
   throw RoundingError("round_safe: the rounded mesh still has " + std::to_string(last_intersecting) +
                       " intersecting pairs after the passes of rounding and arranging, and neither rerouting "

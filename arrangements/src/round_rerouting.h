@@ -1,5 +1,5 @@
 // reroute_conflicts: the first last resort of round_safe (arrangements/round_mesh.h), for
-// meshes on which the passes of rounding and re-arranging do not converge.
+// meshes on which the passes of rounding to nearest and re-arranging do not converge.
 //
 // Every vertex stays at its nearest double; only the triangles change. Rounding by half an
 // ulp breaks an arrangement where a feature is thinner than an ulp: a sliver whose apex lies
@@ -21,8 +21,9 @@
 // source and label set; a dropped sliver has no area beyond delta).
 //
 // Termination: at most max_rounds rounds; it stops earlier after 3 rounds in a row without
-// fewer violations than the best round. What is left of the conflicts then is for
-// round_per_vertex (round_per_vertex.h), which starts from the best round's triangles.
+// fewer violations than the best round. What is left of the conflicts then is for the
+// coarser grids and round_per_vertex (round_per_vertex.h), which also tries the best
+// round's triangles.
 // Cost per round: one check (support/violation_tracker.h: the first round every pair, later
 // ones only the pairs with a triangle the round before did not have), exact distance tests
 // (rationals of the doubles, after a double filter) on the triangles of violating pairs, a

@@ -26,7 +26,8 @@
 //   coordinate magnitude L). Some meshes hold features far thinner than an ulp (slivers,
 //   two surfaces 1e-33 apart near a zero coordinate); passes at level 0 then keep making
 //   new points at that scale. When a pass does not reduce the intersecting pairs, grows the
-//   mesh by more than a tenth, or 4 passes did not succeed, the next level starts again
+//   mesh by more than a tenth, or 4 passes did not succeed, rerouting is tried (below: it
+//   moves the surface by an ulp at most), then the next level starts again
 //   from the exact arrangement, on the uniform grid of spacing h = 2^(8j) ulps of L
 //   (level j = 1..4; snap distance h): unlike the doubles, the grid is as coarse near
 //   zero as anywhere, so features thinner than a cell collapse instead of crossing again.
@@ -35,15 +36,15 @@
 //   from a point of the previous pass's surface; report->max_move sums the largest move
 //   of each pass of the successful level (bounded from exact coordinate differences), so
 //   every vertex of the result lies within it of the exact arrangement's surface.
-//   Last resorts (when the levels fail), without arranging again, so without new points:
-//   First, rerouting (src/round_rerouting.h): every vertex stays at its nearest double;
+//   Last resorts, without arranging again, so without new points:
+//   Rerouting (src/round_rerouting.h), when level 0 fails: every vertex stays at its nearest double;
 //   slivers whose apex lies within an ulp of the opposite edge collapse onto it, and of
 //   each violating pair the vertex within an ulp of the other's edge or face is put on it
 //   (the triangles there split through it: snap rounding's hot-pixel rule); each round
 //   checks the result exactly. This settles operands placed in contact by transforms
 //   rounded to doubles (the EMBER pairs), with the surface moved by an ulp at most.
-//   Then, rounding per vertex (src/round_per_vertex.h), from the arrangement's triangles,
-//   then from the rerouted ones. Every vertex of the exact arrangement goes to the nearest
+//   Rounding per vertex (src/round_per_vertex.h), when the levels fail too, from the
+//   arrangement's triangles, then from the rerouted ones. Every vertex of the exact arrangement goes to the nearest
 //   double; each round checks the rounded mesh exactly (check_arrangement) and moves the
 //   vertices of every violating pair, and only those, to the next coarser uniform grid
 //   (2^(2j) ulps of L, j <= 16); vertices that land on one position become one, collapsed
