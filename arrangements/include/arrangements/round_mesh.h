@@ -54,9 +54,10 @@
 //   odd number of meridians): there it settles with a few vertices a few ulps off.
 //   Termination: the passes have no proof (3D snap rounding with a proven bound needs a
 //   grid far coarser than doubles): at most kLevels x 4 = 20 of them. Rerouting stops
-//   after 3 rounds without fewer violations. Rounding per vertex terminates by construction (each failed round raises a bounded level of some vertex)
-//   and gives up after two rounds without fewer violations, at a vertex needing more than
-//   2^32 ulps, or when options.max_passes (passes and rounds together) is reached. What is
+//   after 3 rounds without fewer violations. Rounding per vertex terminates by
+//   construction (each failed round raises a bounded level of some vertex) and gives up
+//   after two rounds without fewer violations, at a vertex needing more than 2^32 ulps,
+//   or when options.max_passes (passes and rounds together) is reached. What is
 //   measured (tests/test_round_safe.cpp: every shared mesh with intersections, MCUT and
 //   EMBER pairs, rotated copies) is given in the tests' output.
 //   Known failures (RoundingError): surfaces that nearly coincide over whole faces,
