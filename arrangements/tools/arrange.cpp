@@ -9,9 +9,7 @@
 #include <cstdlib>
 #include <exception>
 #include <optional>
-#include <set>
 #include <string>
-#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -20,6 +18,7 @@
 #include "arrangements/check_arrangement.h"
 #include "arrangements/input_error.h"
 #include "io/mesh_format.h"
+#include "support/command_line.h"
 #include "support/process_usage.h"
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/round_mesh.h"
@@ -92,11 +91,6 @@ std::string usage() {
          kUsageEnd;
 }
 
-[[noreturn]] void usage_error(const std::string& message) {
-  std::fprintf(stderr, "arrange: %s (see --help)\n", message.c_str());
-  std::exit(2);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -107,59 +101,48 @@ int main(int argc, char** argv) {
   int threads = 0;
   std::string classifier = "tritri";
   std::string round = "nearest";
-  std::set<std::string> given;  // options with a value seen so far (each may be given once)
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&](const std::string& name) -> std::string {
-      if (!given.insert(name).second) usage_error(name + " given twice");
-      if (i + 1 >= argc) usage_error(name + " needs a value");
-      if (std::string_view(argv[i + 1]).starts_with("--"))  // e.g. `--threads --stats`; write ./--x for such a file
-        usage_error(name + " needs a value, got the option '" + argv[i + 1] + "'");
-      return argv[++i];
-    };
+  detail::CommandLine args("arrange", argc, argv);
+  while (args.next()) {
+    const std::string& a = args.current();
     if (a == "--help" || a == "-h") {
       std::fputs(usage().c_str(), stdout);
       return 0;
     } else if (a == "--stats") {
       stats = true;
     } else if (a == "-o" || a == "--output") {
-      output = value("--output");
-      if (output->empty()) usage_error("--output needs a file name, got ''");
+      output = args.value("--output");
+      if (output->empty()) args.usage_error("--output needs a file name, got ''");
     } else if (a == "--check") {
       check = true;
     } else if (a == "--exact") {
       exact = true;
     } else if (a == "--round") {
-      round = value("--round");
-      if (round != "nearest" && round != "safe") usage_error("unknown rounding '" + round + "' (known: nearest, safe)");
+      round = args.value("--round");
+      if (round != "nearest" && round != "safe")
+        args.usage_error("unknown rounding '" + round + "' (known: nearest, safe)");
     } else if (a == "--scale") {
       scale = true;
     } else if (a == "--classifier") {
-      classifier = value("--classifier");
+      classifier = args.value("--classifier");
       if (classifier != "native" && classifier != "tritri")
-        usage_error("unknown classifier '" + classifier + "' (known: native, tritri)");
+        args.usage_error("unknown classifier '" + classifier + "' (known: native, tritri)");
     } else if (a == "--threads") {
-      const std::string v = value("--threads");
-      const auto n = parse_count(v, 0, kMaxThreads);
-      if (!n) usage_error("--threads needs an integer from 0 to " + std::to_string(kMaxThreads) + ", got '" + v + "'");
-      threads = static_cast<int>(*n);
-    } else if (a.size() > 1 && a[0] == '-') {
-      usage_error("unknown option '" + a + "'");
-    } else if (a.empty()) {
-      usage_error("an input file name is empty");
+      threads = static_cast<int>(args.count("--threads", 0, kMaxThreads));
     } else {
-      inputs.push_back(a);
+      inputs.push_back(args.operand("an input file name"));
     }
   }
-  if (inputs.empty()) usage_error("no input file");
-  if (exact && given.count("--round")) usage_error("--round and --exact exclude each other (--exact does not round)");
+  if (inputs.empty()) args.usage_error("no input file");
+  if (exact && args.given("--round"))
+    args.usage_error("--round and --exact exclude each other (--exact does not round)");
   if (output) {
     using arrangements::detail::kWriteFormats;
     const auto format = arrangements::detail::format_of(*output, kWriteFormats);
     if (!format)
-      usage_error("unknown output format '" + *output +
-                  "' (known: " + arrangements::detail::extension_list(kWriteFormats) + ")");
-    if (exact && *format == arrangements::detail::MeshFormat::ply) usage_error("--exact needs an .obj or .off output");
+      args.usage_error("unknown output format '" + *output + "' (known: " +
+                       arrangements::detail::extension_list(kWriteFormats) + ")");
+    if (exact && *format == arrangements::detail::MeshFormat::ply)
+      args.usage_error("--exact needs an .obj or .off output");
   }
   const int workers = threads > 0 ? threads : tbb::info::default_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, workers);

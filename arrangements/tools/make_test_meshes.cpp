@@ -6,10 +6,9 @@
 #include <filesystem>
 #include <optional>
 #include <string>
-#include <string_view>
 
+#include "support/command_line.h"
 #include "support/mesh_generators.h"
-#include "arrangements/thread_count.h"
 #include "io/write_off.h"
 
 namespace {
@@ -32,45 +31,27 @@ exit status: 0 success, 1 the files could not be written, 2 bad command line.
 // Each copy has about 39,000 triangles: 128 copies write about 5 million triangles.
 constexpr long long kMaxCopies = 128;
 
-[[noreturn]] void usage_error(const std::string& message) {
-  std::fprintf(stderr, "make_test_meshes: %s (see --help)\n", message.c_str());
-  std::exit(2);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace arrangements;
   std::optional<std::string> out;
   int copies = 0;
-  bool copies_given = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
+  detail::CommandLine args("make_test_meshes", argc, argv);
+  while (args.next()) {
+    const std::string& a = args.current();
     if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
       return 0;
     } else if (a == "--rotated-copies") {
-      if (copies_given) usage_error("--rotated-copies given twice");
-      copies_given = true;
-      if (i + 1 >= argc) usage_error("--rotated-copies needs a value");
-      if (std::string_view(argv[i + 1]).starts_with("--"))
-        usage_error("--rotated-copies needs a value, got the option '" + std::string(argv[i + 1]) + "'");
-      const std::string v = argv[++i];
-      const auto k = parse_count(v, 1, kMaxCopies);
-      if (!k)
-        usage_error("--rotated-copies needs an integer from 1 to " + std::to_string(kMaxCopies) + ", got '" + v + "'");
-      copies = static_cast<int>(*k);
-    } else if (a.size() > 1 && a[0] == '-') {
-      usage_error("unknown option '" + a + "'");
-    } else if (out) {
-      usage_error("one OUTDIR only, got '" + *out + "' and '" + a + "'");
-    } else if (a.empty()) {
-      usage_error("OUTDIR is empty");
+      copies = static_cast<int>(args.count("--rotated-copies", 1, kMaxCopies));
     } else {
-      out = a;
+      const std::string& dir = args.operand("OUTDIR");
+      if (out) args.usage_error("one OUTDIR only, got '" + *out + "' and '" + dir + "'");
+      out = dir;
     }
   }
-  if (!out) usage_error("no OUTDIR");
+  if (!out) args.usage_error("no OUTDIR");
   try {
     std::filesystem::create_directories(*out);
     auto write = [&](const std::string& name, const TriangleSoup& s) {

@@ -10,9 +10,7 @@
 #include <cstdlib>
 #include <exception>
 #include <numeric>
-#include <set>
 #include <string>
-#include <string_view>
 #include <type_traits>
 #include <variant>
 #include <vector>
@@ -23,6 +21,7 @@
 #include "arrangements/arrange_stats.h"
 #include "arrangements/input_error.h"
 #include "arrangements/load_triangle_soup.h"
+#include "support/command_line.h"
 #include "support/process_usage.h"
 #include "arrangements/thread_count.h"
 
@@ -64,11 +63,6 @@ value, option given twice).
 )";
 
 constexpr long long kMaxRepeat = 1000000, kMaxDifferences = 1000000;
-
-[[noreturn]] void usage_error(const std::string& message) {
-  std::fprintf(stderr, "tritri-compare: %s (see --help)\n", message.c_str());
-  std::exit(2);
-}
 
 
 std::string json_string(const std::string& s) {
@@ -112,21 +106,9 @@ int main(int argc, char** argv) {
   int threads = 0;
   std::size_t max_differences = 10;
   int repeat = 1;
-  std::set<std::string> given;  // options with a value seen so far (each may be given once)
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto number = [&](const std::string& name, long long lo, long long hi) -> long long {
-      if (!given.insert(name).second) usage_error(name + " given twice");
-      if (i + 1 >= argc) usage_error(name + " needs a value");
-      if (std::string_view(argv[i + 1]).starts_with("--"))  // e.g. `--threads --stats`; write ./--x for such a file
-        usage_error(name + " needs a value, got the option '" + argv[i + 1] + "'");
-      const std::string v = argv[++i];
-      const auto n = parse_count(v, lo, hi);
-      if (!n)
-        usage_error(name + " needs an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got '" +
-                    v + "'");
-      return *n;
-    };
+  detail::CommandLine args("tritri-compare", argc, argv);
+  while (args.next()) {
+    const std::string& a = args.current();
     if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
       return 0;
@@ -137,20 +119,16 @@ int main(int argc, char** argv) {
     } else if (a == "--inject-disagreement") {
       inject = true;
     } else if (a == "--threads") {
-      threads = static_cast<int>(number("--threads", 0, kMaxThreads));
+      threads = static_cast<int>(args.count("--threads", 0, kMaxThreads));
     } else if (a == "--repeat") {
-      repeat = static_cast<int>(number("--repeat", 1, kMaxRepeat));
+      repeat = static_cast<int>(args.count("--repeat", 1, kMaxRepeat));
     } else if (a == "--max-differences") {
-      max_differences = static_cast<std::size_t>(number("--max-differences", 0, kMaxDifferences));
-    } else if (a.size() > 1 && a[0] == '-') {
-      usage_error("unknown option '" + a + "'");
-    } else if (a.empty()) {
-      usage_error("an input file name is empty");
+      max_differences = static_cast<std::size_t>(args.count("--max-differences", 0, kMaxDifferences));
     } else {
-      inputs.push_back(a);
+      inputs.push_back(args.operand("an input file name"));
     }
   }
-  if (inputs.empty()) usage_error("no input file");
+  if (inputs.empty()) args.usage_error("no input file");
   std::string file;
   for (const auto& in : inputs) file += (file.empty() ? "" : " + ") + in;
 
