@@ -164,7 +164,9 @@ tritri::Result classify_exact(const std::vector<std::string>& a, const std::vect
   const RationalRows A = rational_rows(a, "tritri.classify: a"), B = rational_rows(b, "tritri.classify: b");
   if (A.rows() != 3 || B.rows() != 3)
     throw std::invalid_argument("tritri.classify: a and b must be 3 x 3 arrays (one vertex per row)");
-  auto p = [](const RationalRows& M, Eigen::Index r) { return tritri::RationalKernel::Point(M(r, 0), M(r, 1), M(r, 2)); };
+  auto p = [](const RationalRows& M, Eigen::Index r) {
+    return tritri::RationalKernel::Point(M(r, 0), M(r, 1), M(r, 2));
+  };
   return tritri::classify<tritri::RationalKernel>(p(A, 0), p(A, 1), p(A, 2), p(B, 0), p(B, 1), p(B, 2));
 }
 
@@ -257,7 +259,7 @@ nb::dict arrangement_dict(std::vector<double>&& rounded, std::vector<std::uint8_
 // doubles itself: V (every row exact for it, V_is_exact all true), F, source, label_set,
 // label_sets, and stats with the round_* keys. RoundingError becomes RuntimeError.
 template <class Out>
-nb::dict safely_rounded_dict(Out&& out, int threads) {
+nb::dict safely_rounded_dict(Out&& out, int threads, const arrangements::TriangleSoup* input = nullptr) {
   const auto nf = static_cast<std::size_t>(out.F.rows());
   arrangements::RoundedMesh rounded;
   arrangements::RoundReport report;
@@ -277,6 +279,7 @@ nb::dict safely_rounded_dict(Out&& out, int threads) {
     };
     arrangements::RoundSafeOptions options;
     options.threads = threads;
+    options.input = input;
     if constexpr (std::is_same_v<std::decay_t<Out>, arrangements::EigenArrangement>) {
       arrangements::OutputMesh mesh;
       mesh.vertices = std::move(out.vertices);
@@ -310,6 +313,7 @@ nb::dict safely_rounded_dict(Out&& out, int threads) {
   plain.stats.round_max_move_rel = report.max_move_relative;
   plain.stats.round_coarsened = report.coarsened;
   plain.stats.round_rerouted = report.rerouted;
+  plain.stats.round_merged_input = report.merged_input;
   std::vector<double> v(3 * rounded.vertices.size());
   for (std::size_t i = 0; i < rounded.vertices.size(); ++i)
     for (int c = 0; c < 3; ++c) v[3 * i + c] = rounded.vertices[i][c];
@@ -322,6 +326,7 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
   const arrangements::ArrangeOptions options = arrange_options(classifier, threads);
   arrangements::EigenArrangement out;
   std::vector<ExactVec3> exact;
+  std::optional<arrangements::TriangleSoup> input;  // for round_safe's last resort
   {
     nb::gil_scoped_release release;
     // Checked once, by the Eigen entry point (int64 indices and labels are range-checked
@@ -329,8 +334,10 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
     const std::optional<LabelVector> Le = label_vector(labels);
     out = arrangements::detail::arrange_eigen(as_eigen(V), as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange",
                                               exact_output ? &exact : nullptr);
+    if (round_safe)
+      input = arrangements::detail::eigen_soup(as_eigen(V), as_eigen(F), Le ? &*Le : nullptr, "tritri.arrange");
   }
-  if (round_safe) return safely_rounded_dict(std::move(out), threads);
+  if (round_safe) return safely_rounded_dict(std::move(out), threads, &*input);
   const auto nv = static_cast<std::size_t>(out.V.rows());
   std::vector<double> v(3 * nv);
   std::vector<std::uint8_t> flags(nv);

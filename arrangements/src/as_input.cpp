@@ -38,7 +38,8 @@ ExactVec3 to_exact(const Vec3& v) { return {CGAL::Gmpq(v[0]), CGAL::Gmpq(v[1]), 
 ExactTriangleSoup to_exact(TriangleSoup soup) {
   ExactTriangleSoup out;
   out.vertices.resize(soup.vertices.size());
-  tbb::parallel_for(std::size_t{0}, soup.vertices.size(), [&](std::size_t i) { out.vertices[i] = to_exact(soup.vertices[i]); });
+  tbb::parallel_for(std::size_t{0}, soup.vertices.size(),
+                    [&](std::size_t i) { out.vertices[i] = to_exact(soup.vertices[i]); });
   std::vector<Vec3>().swap(soup.vertices);
   out.triangles = std::move(soup.triangles);
   out.label_set = std::move(soup.label_set);

@@ -16,8 +16,10 @@
 
 #include "arrangements/arrange.h"
 #include "arrangements/as_input.h"
+#include "round_merged_input.h"
 #include "round_per_vertex.h"
 #include "round_rerouting.h"
+#include "support/cell_grid.h"
 #include "support/mesh_on_positions.h"
 #include "support/rounding_grid.h"
 #include "support/vertex_coordinates.h"
@@ -62,39 +64,26 @@ RoundedMesh round_mesh(const Mesh& mesh, double h, double snap, double& max_move
   // the 27 cells around it; the cell indices stay below 2^53.
   std::vector<int> target(nv, -1);
   if (snap > 0) {
-    const double cell = 2 * snap;
-    using Key = std::array<long long, 3>;
-    auto key_of = [cell](const Vec3& p) {
-      return Key{static_cast<long long>(std::floor(p[0] / cell)), static_cast<long long>(std::floor(p[1] / cell)),
-                 static_cast<long long>(std::floor(p[2] / cell))};
-    };
-    std::vector<std::pair<Key, int>> grid;
+    detail::CellGrid grid(2 * snap);
     for (std::size_t v = 0; v < nv; ++v)
-      if (fixed[v]) grid.emplace_back(key_of(double_coordinates(mesh.vertices[v])), static_cast<int>(v));
-    std::sort(grid.begin(), grid.end());
+      if (fixed[v]) grid.add(double_coordinates(mesh.vertices[v]), static_cast<int>(v));
+    grid.finish();
     const CGAL::Gmpq limit = CGAL::Gmpq(snap) * CGAL::Gmpq(snap);
     tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t i) {
       if (fixed[i]) return;
-      const Key k = key_of(nearest_of(i));
       CGAL::Gmpq best;
-      for (long long dx = -1; dx <= 1; ++dx)
-        for (long long dy = -1; dy <= 1; ++dy)
-          for (long long dz = -1; dz <= 1; ++dz) {
-            const Key c{k[0] + dx, k[1] + dy, k[2] + dz};
-            for (auto it = std::lower_bound(grid.begin(), grid.end(), std::pair<Key, int>{c, -1});
-                 it != grid.end() && it->first == c; ++it) {
-              const Vec3 w = double_coordinates(mesh.vertices[it->second]);
-              CGAL::Gmpq d2 = 0;
-              for (int j = 0; j < 3; ++j) {
-                const CGAL::Gmpq d = exact[i][j] - CGAL::Gmpq(w[j]);
-                d2 += d * d;
-              }
-              if (d2 <= limit && (target[i] < 0 || d2 < best || (d2 == best && it->second < target[i]))) {
-                target[i] = it->second;
-                best = d2;
-              }
-            }
-          }
+      grid.for_each_near(nearest_of(i), [&](int w_index) {
+        const Vec3 w = double_coordinates(mesh.vertices[w_index]);
+        CGAL::Gmpq d2 = 0;
+        for (int j = 0; j < 3; ++j) {
+          const CGAL::Gmpq d = exact[i][j] - CGAL::Gmpq(w[j]);
+          d2 += d * d;
+        }
+        if (d2 <= limit && (target[i] < 0 || d2 < best || (d2 == best && w_index < target[i]))) {
+          target[i] = w_index;
+          best = d2;
+        }
+      });
     });
   }
   std::vector<Vec3> position(nv);
@@ -275,10 +264,33 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       r.rerouted = 0;
     }
   }
+  // The last resort that goes back to the input (round_merged_input.h): its vertices within
+  // 4, 16, 64, then 256 ulps of each other merged, the merged input arranged and rounded.
+  if (options.input != nullptr)
+    for (int k = 1; k <= 4 && r.passes < options.max_passes; ++k) {
+      const MergedInput merged = merge_close_input_vertices(*options.input, std::ldexp(ulp, 2 * k));
+      if (merged.merged == 0) continue;
+      RoundSafeOptions inner = options;
+      inner.input = nullptr;
+      inner.max_passes = options.max_passes - r.passes;
+      RoundReport done;
+      try {
+        RoundedMesh rounded = round_safe(arrange(merged.soup, arrange_options).mesh, inner, &done);
+        done.passes += r.passes;
+        done.merged_input = merged.merged;
+        r = done;
+        return finish(std::move(rounded), merged.max_move + done.max_move, done.grid);
+      } catch (const RoundingError&) {
+        r.passes += done.passes;
+      }
+    }
+  if (report) *report = r;
   throw RoundingError("round_safe: the rounded mesh still has " + std::to_string(last_intersecting) +
                       " intersecting pairs after the passes of rounding and arranging, and neither rerouting "
                       "(it stops after 3 rounds without fewer violations) nor rounding per vertex (after two "
-                      "rounds without fewer conflicts, or at a grid of 2^32 ulps) settled it; " +
+                      "rounds without fewer conflicts, or at a grid of 2^32 ulps)" +
+                      std::string(options.input != nullptr ? " nor merging input vertices within 256 ulps" : "") +
+                      " settled it; " +
                       std::to_string(r.passes) + " passes and rounds in all (at most " +
                       std::to_string(options.max_passes) + ")");
 }

@@ -10,6 +10,7 @@
 #include <exception>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -61,7 +62,8 @@ options:
                           settle, vertices kept at their nearest doubles and triangles
                           rerouted through vertices within an ulp, then coarser grids,
                           then every vertex rounded on its own, to coarser grids only
-                          at the conflicts;
+                          at the conflicts, then input vertices a few ulps apart
+                          merged and the input arranged again;
                           provenance kept; exit status 4 if nothing settles within 64
                           passes. Stats round_*
   --check                 verify the arrangement exactly: every pair of triangles with
@@ -167,6 +169,7 @@ int main(int argc, char** argv) {
             const auto tr = std::chrono::steady_clock::now();
             RoundSafeOptions ro;
             ro.threads = workers;
+            if constexpr (std::is_same_v<std::decay_t<decltype(soup)>, TriangleSoup>) ro.input = &soup;
             RoundReport report;
             try {
               rounded = round_safe(result.mesh, ro, &report);
@@ -179,6 +182,7 @@ int main(int argc, char** argv) {
             s.round_max_move_rel = report.max_move_relative;
             s.round_coarsened = report.coarsened;
             s.round_rerouted = report.rerouted;
+            s.round_merged_input = report.merged_input;
             add_write_time(s, seconds_since(tr));
           }
           if (output) {

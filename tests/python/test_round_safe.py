@@ -11,6 +11,10 @@ tritri.arrange(..., rounding="safe") returns a float64 mesh that is itself an ar
   passes and a displacement bound;
 - two copies of a sphere with 19 meridians turned by pi (grazing crossings) need the last
   resort, rounding per vertex: stats report round_coarsened > 0;
+- three copies of a 12 x 24 sphere turned by 2 pi / 3 (the copies' vertices a few ulps
+  apart, the layers crossing wherever the rounding errors change sign) settle only by
+  the last resort that merges input vertices: stats report round_merged_input > 0, and
+  the result is about one sphere, most of its area with all three labels;
 - exact input (Fractions) takes the exact path and rounds safely the same way;
 - refusals: an unknown rounding (ValueError), a rounding that is not a str
   (ArgumentTypeError), exact_output=True with rounding="safe" (ValueError).
@@ -105,6 +109,27 @@ def test_grazing_copies_need_the_last_resort():
     assert s["round_rerouted"] == 0  # rerouting did not settle it: not reported
     plain = tritri.arrange(V2, F2)["stats"]
     assert plain["round_coarsened"] == plain["round_rerouted"] == 0
+
+
+def test_nearly_coincident_copies_merge_at_their_input_vertices():
+    V, F = uv_sphere((0.1, 0.2, 0.3), 1.0, 12, 24)
+    V3, F3 = rotated_copies(V, F, 3, (0.1, 0.2, 0.3))
+    labels = np.repeat(np.arange(3), len(F))
+    out = tritri.arrange(V3, F3, labels, rounding="safe")
+    assert_is_arrangement(out)
+    s = out["stats"]
+    assert s["round_merged_input"] > 0 and 0 < s["round_max_move_rel"] < 1e-14
+
+    def area(W, G):
+        a, b, c = W[G[:, 0]], W[G[:, 1]], W[G[:, 2]]
+        return 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1)
+
+    one_sphere = area(V, F).sum()
+    faces = area(out["V"], out["F"])
+    assert one_sphere * (1 - 1e-9) < faces.sum() < 1.1 * one_sphere
+    shared = np.array([len(out["label_sets"][ls]) == 3 for ls in out["label_set"]])
+    assert faces[shared].sum() > 0.9 * faces.sum()
+    assert tritri.arrange(V3, F3)["stats"]["round_merged_input"] == 0
 
 
 def test_exact_input_rounds_safely():

@@ -13,8 +13,9 @@
 //          options classifier, threads (<= 0: all cores; at most kMaxThreads, see
 //                  thread_count.h, else std::invalid_argument; the caller's TBB arena
 //                  limit also applies), scale (exact power-of-two scaling by the
-//                  preprocessing; double input only, ignored for exact input), count_predicates (count the classification stage's
-//                  orient3d / orient2d calls)
+//                  preprocessing; double input only, ignored for exact input),
+//                  count_predicates (count the classification stage's orient3d /
+//                  orient2d calls)
 // Output:  ArrangeResult (ExactArrangeResult for exact input, its vertices rationals):
 //          the output mesh (in the input's coordinates, also with scale:
 //          its points are rebuilt from the unscaled defining points, exactly) and the

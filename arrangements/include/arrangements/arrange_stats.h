@@ -53,6 +53,7 @@ struct ArrangeStats {
   double round_max_move = 0, round_max_move_rel = 0;
   std::size_t round_coarsened = 0;
   std::size_t round_rerouted = 0;
+  std::size_t round_merged_input = 0;
 };
 
 // One row of the table.
@@ -109,7 +110,8 @@ inline constexpr auto kArrangeStats = std::make_tuple(
     stat_entry("t_classify_s", &ArrangeStats::t_classify_s, 6,
                "seconds classifying pairs, building the intersection graph"),
     stat_entry("t_triangulate_s", &ArrangeStats::t_triangulate_s, 6, "seconds triangulating"),
-    stat_entry("t_output_s", &ArrangeStats::t_output_s, 6, "seconds making (rounding with --round safe, writing) the output mesh"),
+    stat_entry("t_output_s", &ArrangeStats::t_output_s, 6,
+               "seconds making (rounding with --round safe, writing) the output mesh"),
     stat_entry("t_total_s", &ArrangeStats::t_total_s, 6, "seconds in all, loading and writing included"),
     stat_entry("peak_rss_mb", &ArrangeStats::peak_rss_mb, 1, "peak resident memory of the process, MB"),
     stat_entry("round_passes", &ArrangeStats::round_passes, 0,
@@ -122,7 +124,10 @@ inline constexpr auto kArrangeStats = std::make_tuple(
                "--round safe: vertices its last resort moved to a coarser grid (0 unless the passes failed)"),
     stat_entry("round_rerouted", &ArrangeStats::round_rerouted, 0,
                "--round safe: vertices its last resort put on a nearby edge or face, each staying at its "
-               "nearest double (0 unless the passes failed)"));
+               "nearest double (0 unless the passes failed)"),
+    stat_entry("round_merged_input", &ArrangeStats::round_merged_input, 0,
+               "--round safe: input vertices its last resort merged into another within 256 ulps, the "
+               "merged input arranged again (0 unless every other way failed)"));
 
 // The keys and meanings alone, in order.
 struct StatKey {

@@ -36,22 +36,30 @@
 //   from a point of the previous pass's surface; report->max_move sums the largest move
 //   of each pass of the successful level (bounded from exact coordinate differences), so
 //   every vertex of the result lies within it of the exact arrangement's surface.
-//   Last resorts, without arranging again, so without new points:
-//   Rerouting (src/round_rerouting.h), when level 0 fails: every vertex stays at its nearest double;
-//   slivers whose apex lies within an ulp of the opposite edge collapse onto it, and of
+//   Last resorts; the first two do not arrange again, so they make no new points:
+//   Rerouting (src/round_rerouting.h), when level 0 fails: every vertex stays at its
+//   nearest double; slivers whose apex lies within an ulp of the opposite edge collapse onto it, and of
 //   each violating pair the vertex within an ulp of the other's edge or face is put on it
 //   (the triangles there split through it: snap rounding's hot-pixel rule); each round
 //   checks the result exactly. This settles operands placed in contact by transforms
 //   rounded to doubles (the EMBER pairs), with the surface moved by an ulp at most.
 //   Rounding per vertex (src/round_per_vertex.h), when the levels fail too, from the
-//   arrangement's triangles, then from the rerouted ones. Every vertex of the exact arrangement goes to the nearest
-//   double; each round checks the rounded mesh exactly (check_arrangement) and moves the
+//   arrangement's triangles, then from the rerouted ones. Every vertex of the exact
+//   arrangement goes to the nearest double; each round checks the rounded mesh exactly (check_arrangement) and moves the
 //   vertices of every violating pair, and only those, to the next coarser uniform grid
 //   (2^(2j) ulps of L, j <= 16); vertices that land on one position become one, collapsed
 //   triangles are dropped, triangles on the same three vertices become one with the union
 //   of their labels. It makes no new points, so it does not feed on itself the way the
 //   passes can where layers cross at grazing angles (two copies of a sphere rotated by pi,
 //   odd number of meridians): there it settles with a few vertices a few ulps off.
+//   Merging input vertices (src/round_merged_input.h), when everything else fails and
+//   options.input is given: input vertices within 4 ulps of L of each other are merged
+//   (transitively; then 16, 64, 256 ulps while it does not settle), the merged input is
+//   arranged again and rounded safely as above (without this step). Copies of one mesh
+//   placed by transforms rounded to doubles (rotated copies whose vertices map onto each
+//   other, instances) then coincide exactly, each shared face once with the union of the
+//   labels, instead of crossing wherever the rounding errors change sign. The bound adds
+//   the largest distance a vertex moved to its cluster's representative.
 //   Termination: the passes have no proof (3D snap rounding with a proven bound needs a
 //   grid far coarser than doubles): at most kLevels x 4 = 20 of them. Rerouting stops
 //   after 3 rounds without fewer violations. Rounding per vertex terminates by
@@ -60,12 +68,13 @@
 //   or when options.max_passes (passes and rounds together) is reached. What is
 //   measured (tests/test_round_safe.cpp: every shared mesh with intersections, MCUT and
 //   EMBER pairs, rotated copies) is given in the tests' output.
-//   Known failures (RoundingError): surfaces that nearly coincide over whole faces,
-//   triangulated differently (three copies of a sphere rotated by 2 pi / 3, whose vertices
-//   coincide to 1e-16): at every level the rounded layers cross again in as many places,
-//   their conflicts are not within an ulp of a feature, and coarsening them only spreads
-//   them. The exact output
-//   (--exact) is always available.
+//   Known failures (RoundingError): surfaces that nearly coincide over whole faces with
+//   vertices that are not near each other (three copies of a 100 x 197 sphere rotated by
+//   2 pi / 3 about its axis, crossing at grazing angles near the poles; without
+//   options.input, also copies whose vertices coincide to 1e-16): at every level the
+//   rounded layers cross again in as many places, their conflicts are not within an ulp
+//   of a feature, and coarsening them only spreads them. The exact output (--exact) is
+//   always available.
 //   Provenance is kept: a triangle of the result lies in (the rounded image of) the input
 //   triangle `source` names, with the union of labels of every input triangle covering it;
 //   triangles that collapsed to a segment or a point are gone (they had no area).
@@ -89,6 +98,9 @@ namespace arrangements {
 struct RoundSafeOptions {
   int max_passes = 64;  // passes of rounding and arranging, then rounds of the last resort
   int threads = 0;  // worker threads of the pipeline runs: 0 for all cores
+  // The input that `mesh` is the arrangement of (double path only; optional): enables the
+  // last resort of merging input vertices that lie within a few ulps of each other.
+  const TriangleSoup* input = nullptr;
 };
 
 struct RoundReport {
@@ -101,6 +113,8 @@ struct RoundReport {
   std::size_t coarsened = 0;        // vertices rounding per vertex put on a coarser grid
   std::size_t rerouted = 0;         // vertices rerouting put on an edge or a face
                                     // (0 when the passes succeeded)
+  std::size_t merged_input = 0;     // input vertices merged into another one (the last
+                                    // resort that needs options.input)
 };
 
 struct RoundingError : std::runtime_error {
