@@ -26,6 +26,7 @@
 #include "arrangements/check_arrangement.h"
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/round_mesh.h"
+#include "round_merged_input.h"
 #include "support/exact_soups.h"
 #include "support/loadable_meshes.h"
 #include "support/mesh_generators.h"
@@ -281,6 +282,31 @@ TEST(RoundSafe, NearlyCoincidentCopiesMergeAtTheirInputVertices) {
   std::printf("three copies: %d passes and rounds, %zu input vertices merged, largest move / diagonal %.3g, "
               "%.4f of the area shared by all three\n",
               report.passes, report.merged_input, report.max_move_relative, shared_area / rounded_area);
+}
+
+TEST(RoundSafe, MergingInputVerticesIsExactAndTransitive) {
+  // delta = 2^-40: every coordinate below is a double, every distance known exactly.
+  const double d = std::ldexp(1.0, -40);
+  TriangleSoup s;
+  s.vertices = {{1, 0, 0},          // 0
+                {1 + d, 0, 0},      // 1: delta from 0, merged
+                {1 + 2 * d, 0, 0},  // 2: delta from 1, 2 delta from 0: merged through 1
+                {1, d + d * std::ldexp(1.0, -20), 0},  // 3: just beyond delta of 0 and 1: kept
+                {1, 0, d},          // 4: exactly delta from 0: merged
+                {5, 5, 5}};         // 5
+  s.triangles = {{0, 1, 5}, {3, 4, 5}, {2, 3, 5}};
+  s.label_set = {0, 0, 0};
+  s.label_sets = {{0}};
+  s.source = {0, 1, 2};
+  const MergedInput m = merge_close_input_vertices(s, d);
+  EXPECT_EQ(m.merged, 3u);
+  ASSERT_EQ(m.soup.triangles.size(), 2u);  // (0, 1, 5) collapsed
+  EXPECT_EQ(m.soup.triangles[0], (Tri{3, 0, 5}));
+  EXPECT_EQ(m.soup.triangles[1], (Tri{0, 3, 5}));
+  EXPECT_EQ(m.soup.source, (std::vector<std::int64_t>{1, 2}));
+  EXPECT_GE(m.max_move, 2 * d);
+  EXPECT_LE(m.max_move, 2 * d * (1 + 1e-12));
+  EXPECT_EQ(merge_close_input_vertices(s, d / 2).merged, 0u);
 }
 
 TEST(RoundSafe, RationalScenesOnTheExactPath) {
