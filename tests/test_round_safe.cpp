@@ -284,6 +284,21 @@ TEST(RoundSafe, NearlyCoincidentCopiesMergeAtTheirInputVertices) {
               report.passes, report.merged_input, report.max_move_relative, shared_area / rounded_area);
 }
 
+TEST(RoundSafe, GrazingLayersOfThreeCopiesAreRefusedCleanly) {
+  // The known limit: three copies of a sphere with 19 meridians rotated by 2 pi / 3 about
+  // the centre of its bounding box. No vertex maps onto another (nothing to merge), and
+  // the layers cross at grazing angles all over: every last resort leaves conflicts.
+  // round_safe gives up with RoundingError within its budget (no growth without bound);
+  // `arrange --round safe` exits with status 4.
+  const TriangleSoup soup = rotated_copies(uv_sphere({0, 0, 0}, 1.0, 10, 19), 3);
+  const ArrangeResult first = arrange(soup, ArrangeOptions{});
+  ASSERT_GT(first.stats.intersection_points, 0u);
+  RoundReport report;
+  EXPECT_THROW(round_safe(first.mesh, RoundSafeOptions{.input = &soup}, &report), RoundingError);
+  EXPECT_EQ(report.merged_input, 0u);
+  EXPECT_LE(report.passes, RoundSafeOptions{}.max_passes);
+}
+
 TEST(RoundSafe, MergingInputVerticesIsExactAndTransitive) {
   // delta = 2^-40: every coordinate below is a double, every distance known exactly.
   const double d = std::ldexp(1.0, -40);

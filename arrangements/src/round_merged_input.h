@@ -1,11 +1,11 @@
-// merge_close_input_vertices: the last resort of round_safe (arrangements/round_mesh.h) that
-// goes back to the input, for surfaces that nearly coincide: copies of one mesh placed by
-// transforms rounded to doubles (instances, rotated copies), whose vertices lie a few ulps
-// apart. Their exact arrangement crosses the layers wherever the rounding errors change
-// sign, in far more places than the input has vertices, and no rounding of those crossings
-// keeps the layers apart. Merged, the copies coincide exactly: arranging the merged input
-// gives each shared face once, with the union of the labels, and nothing thinner than an
-// ulp is left to round.
+// merge_close_input_vertices: the step of round_safe (arrangements/round_mesh.h) that goes
+// back to the input (after rerouting, before the coarser grids), for surfaces that nearly
+// coincide: copies of one mesh placed by transforms rounded to doubles (instances, rotated
+// copies), whose vertices lie a few ulps apart. Their exact arrangement crosses the layers
+// wherever the rounding errors change sign, in far more places than the input has
+// vertices, and no rounding of those crossings keeps the layers apart. Merged, the copies
+// coincide exactly: arranging the merged input gives each shared face once, with the
+// union of the labels, and nothing thinner than an ulp is left to round.
 #pragma once
 
 #include <cstddef>

@@ -240,6 +240,32 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
                      largest_distance(exact, nearest_positions) + reroute_move, 0.0);
     }
   }
+  // Back to the input (round_merged_input.h), when given: its vertices within 4, 16, 64,
+  // then 256 ulps of each other merged, the merged input arranged and rounded safely (a
+  // move of a few ulps where copies of one mesh nearly coincide, before the coarser grids
+  // move every vertex by 2^8 ulps or more). A distance that merges no more vertices than
+  // the one before is not tried again.
+  if (options.input != nullptr) {
+    std::size_t merged_before = 0;
+    for (int k = 1; k <= 4 && r.passes < options.max_passes; ++k) {
+      const MergedInput merged = merge_close_input_vertices(*options.input, std::ldexp(ulp, 2 * k));
+      if (merged.merged == merged_before) continue;
+      merged_before = merged.merged;
+      RoundSafeOptions inner = options;
+      inner.input = nullptr;
+      inner.max_passes = options.max_passes - r.passes;
+      RoundReport done;
+      try {
+        RoundedMesh rounded = round_safe(arrange(merged.soup, arrange_options).mesh, inner, &done);
+        done.passes += r.passes;
+        done.merged_input = merged.merged;
+        r = done;
+        return finish(std::move(rounded), merged.max_move + done.max_move, done.grid);
+      } catch (const RoundingError&) {
+        r.passes += done.passes;
+      }
+    }
+  }
   for (int level = 1; level < kLevels && r.passes < options.max_passes; ++level)
     if (auto done = passes_at_level(level)) return *done;
 
@@ -264,26 +290,6 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       r.rerouted = 0;
     }
   }
-  // The last resort that goes back to the input (round_merged_input.h): its vertices within
-  // 4, 16, 64, then 256 ulps of each other merged, the merged input arranged and rounded.
-  if (options.input != nullptr)
-    for (int k = 1; k <= 4 && r.passes < options.max_passes; ++k) {
-      const MergedInput merged = merge_close_input_vertices(*options.input, std::ldexp(ulp, 2 * k));
-      if (merged.merged == 0) continue;
-      RoundSafeOptions inner = options;
-      inner.input = nullptr;
-      inner.max_passes = options.max_passes - r.passes;
-      RoundReport done;
-      try {
-        RoundedMesh rounded = round_safe(arrange(merged.soup, arrange_options).mesh, inner, &done);
-        done.passes += r.passes;
-        done.merged_input = merged.merged;
-        r = done;
-        return finish(std::move(rounded), merged.max_move + done.max_move, done.grid);
-      } catch (const RoundingError&) {
-        r.passes += done.passes;
-      }
-    }
   if (report) *report = r;
   throw RoundingError("round_safe: the rounded mesh still has " + std::to_string(last_intersecting) +
                       " intersecting pairs after the passes of rounding and arranging, and neither rerouting "

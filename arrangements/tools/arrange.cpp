@@ -60,10 +60,10 @@ options:
                           mesh is itself an arrangement (its triangles meet only in shared
                           vertices and edges, decided exactly); if that does not
                           settle, vertices kept at their nearest doubles and triangles
-                          rerouted through vertices within an ulp, then coarser grids,
-                          then every vertex rounded on its own, to coarser grids only
-                          at the conflicts, then input vertices a few ulps apart
-                          merged and the input arranged again;
+                          rerouted through vertices within an ulp, then input
+                          vertices a few ulps apart merged and the input arranged
+                          again, then coarser grids, then every vertex rounded on its
+                          own, to coarser grids only at the conflicts;
                           provenance kept; exit status 4 if nothing settles within 64
                           passes. Stats round_*
   --check                 verify the arrangement exactly: every pair of triangles with

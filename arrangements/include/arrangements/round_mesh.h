@@ -27,7 +27,8 @@
 //   two surfaces 1e-33 apart near a zero coordinate); passes at level 0 then keep making
 //   new points at that scale. When a pass does not reduce the intersecting pairs, grows the
 //   mesh by more than a tenth, or 4 passes did not succeed, rerouting is tried (below: it
-//   moves the surface by an ulp at most), then the next level starts again
+//   moves the surface by an ulp at most), then merging input vertices (below), then the
+//   next level starts again
 //   from the exact arrangement, on the uniform grid of spacing h = 2^(8j) ulps of L
 //   (level j = 1..4; snap distance h): unlike the doubles, the grid is as coarse near
 //   zero as anywhere, so features thinner than a cell collapse instead of crossing again.
@@ -36,7 +37,8 @@
 //   from a point of the previous pass's surface; report->max_move sums the largest move
 //   of each pass of the successful level (bounded from exact coordinate differences), so
 //   every vertex of the result lies within it of the exact arrangement's surface.
-//   Last resorts; the first two do not arrange again, so they make no new points:
+//   Last resorts; rerouting and rounding per vertex do not arrange again, so they make no
+//   new points:
 //   Rerouting (src/round_rerouting.h), when level 0 fails: every vertex stays at its
 //   nearest double; slivers whose apex lies within an ulp of the opposite edge collapse onto it, and of
 //   each violating pair the vertex within an ulp of the other's edge or face is put on it
@@ -45,17 +47,20 @@
 //   rounded to doubles (the EMBER pairs), with the surface moved by an ulp at most.
 //   Rounding per vertex (src/round_per_vertex.h), when the levels fail too, from the
 //   arrangement's triangles, then from the rerouted ones. Every vertex of the exact
-//   arrangement goes to the nearest double; each round checks the rounded mesh exactly (check_arrangement) and moves the
-//   vertices of every violating pair, and only those, to the next coarser uniform grid
+//   arrangement goes to the nearest double; each round checks the rounded mesh exactly
+//   (check_arrangement) and moves the vertices of every violating pair, and only those,
+//   to the next coarser uniform grid
 //   (2^(2j) ulps of L, j <= 16); vertices that land on one position become one, collapsed
 //   triangles are dropped, triangles on the same three vertices become one with the union
 //   of their labels. It makes no new points, so it does not feed on itself the way the
 //   passes can where layers cross at grazing angles (two copies of a sphere rotated by pi,
 //   odd number of meridians): there it settles with a few vertices a few ulps off.
-//   Merging input vertices (src/round_merged_input.h), when everything else fails and
-//   options.input is given: input vertices within 4 ulps of L of each other are merged
-//   (transitively; then 16, 64, 256 ulps while it does not settle), the merged input is
-//   arranged again and rounded safely as above (without this step). Copies of one mesh
+//   Merging input vertices (src/round_merged_input.h), when rerouting fails and
+//   options.input is given, before the coarser levels (it moves vertices by a few ulps,
+//   they by 2^8 ulps or more): input vertices within 4 ulps of L of each other are merged
+//   (transitively; then 16, 64, 256 ulps while it does not settle, skipping a distance
+//   that merges no more), the merged input is arranged again and rounded safely as here
+//   (without this step). Copies of one mesh
 //   placed by transforms rounded to doubles (rotated copies whose vertices map onto each
 //   other, instances) then coincide exactly, each shared face once with the union of the
 //   labels, instead of crossing wherever the rounding errors change sign. The bound adds
