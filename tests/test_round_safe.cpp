@@ -176,7 +176,11 @@ TEST(RoundSafe, RotatedCopiesOfASphere) {
   // TPIs within an ulp of other vertices and triangles. k = 2 rotates by pi, so the copies
   // are two layers about 1e-16 apart (sin(pi) is not 0 in doubles): rounding must merge
   // them (a coarser grid).
-  for (int k : {2, 5}) {
+  // k = 5 spends about 12 s (Release) in rerouting before a coarser grid settles it: not
+  // at reduced test scale (the sanitizer run).
+  std::vector<int> copies{2, 5};
+  if (tritri_test::test_scale() < 1) copies.pop_back();
+  for (int k : copies) {
     const TriangleSoup soup = rotated_copies(uv_sphere({0.1, 0.2, 0.3}, 1.0, 12, 24), k);
     const ArrangeResult first = arrange(soup, ArrangeOptions{});
     ASSERT_GT(first.stats.intersection_points, 0u);
