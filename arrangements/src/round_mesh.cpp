@@ -38,6 +38,7 @@ Vec3 double_coordinates(const ExactVec3&) { return {}; }  // never asked
 // again after every pass.
 constexpr int kLevels = 5;
 constexpr int kPassesPerLevel = 4;
+constexpr int kRerouteCycles = 8;
 
 double level_spacing(double largest, int level) { return level == 0 ? 0 : grid_spacing(largest, 8 * level); }
 
@@ -225,19 +226,47 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       throw RoundingError("round_safe: a last resort passed the check but arranging its result changed it");
     return finish(std::move(rounded), max_move, grid);
   };
-  Rerouting rerouting;
-  if (r.passes < options.max_passes) {
-    rerouting = reroute_conflicts(nearest_positions, mesh.triangles, mesh.source, mesh.label_set, mesh.label_sets,
-                                  ulp, options.max_passes - r.passes);
-    r.passes += rerouting.rounds;
-    if (rerouting.violations == 0) {
-      r.rerouted = rerouting.rerouted;
+  // Rerouting, in cycles: when one stalls, its best mesh is arranged again exactly (the
+  // crossings its rounding left become points) and rounded to nearest, snapping new points
+  // within an ulp to a double vertex as the passes do, and rerouting goes on from there.
+  // The bound adds each cycle's rounding move and an ulp for its rerouting.
+  Rerouting rerouting;  // the first cycle's, for rounding per vertex below
+  {
+    RoundedMesh cycle_mesh;
+    double cycle_move = largest_distance(exact, nearest_positions);
+    std::size_t rerouted = 0;
+    for (int cycle = 0; cycle < kRerouteCycles && r.passes < options.max_passes; ++cycle) {
+      const bool first = cycle == 0;
+      const std::vector<Vec3>& at = first ? nearest_positions : cycle_mesh.vertices;
+      Rerouting now = reroute_conflicts(at, first ? mesh.triangles : cycle_mesh.triangles,
+                                        first ? mesh.source : cycle_mesh.source,
+                                        first ? mesh.label_set : cycle_mesh.label_set,
+                                        first ? mesh.label_sets : cycle_mesh.label_sets, ulp,
+                                        options.max_passes - r.passes);
+      r.passes += now.rounds;
+      rerouted += now.rerouted;
       // The surface of a rerouted triangle is within an ulp of the rounded one.
-      const double reroute_move = rerouting.rerouted > 0 ? ulp : 0.0;
-      return settled(mesh_on_positions(nearest_positions, rerouting.triangles, rerouting.source, rerouting.label_set,
-                                       rerouting.label_sets)
-                         .mesh,
-                     largest_distance(exact, nearest_positions) + reroute_move, 0.0);
+      if (now.rerouted > 0) cycle_move += ulp;
+      RoundedMesh best = mesh_on_positions(at, now.triangles, now.source, now.label_set, now.label_sets).mesh;
+      const std::size_t violations = now.violations;
+      if (first) rerouting = std::move(now);
+      if (violations == 0) {
+        r.rerouted = rerouted;
+        return settled(std::move(best), cycle_move, 0.0);
+      }
+      // Arranging again pays only for few conflicts: where they are many (layers that
+      // nearly coincide over whole faces, for the input merge and the coarser grids) it
+      // makes as many new ones; a cycle that grows the mesh by more than a tenth feeds on
+      // itself the same way.
+      const std::size_t triangles = best.triangles.size();
+      if (violations > triangles / 20 ||
+          triangles > mesh.triangles.size() + mesh.triangles.size() / 10 || r.passes >= options.max_passes)
+        break;
+      ++r.passes;
+      ++r.reroute_cycles;
+      double move_now = 0;
+      cycle_mesh = round_mesh(arrange(as_input(best), arrange_options).mesh, 0, ulp, move_now);
+      cycle_move += move_now;
     }
   }
   // Back to the input (round_merged_input.h), when given: its vertices within 4, 16, 64,

@@ -60,7 +60,8 @@ options:
                           mesh is itself an arrangement (its triangles meet only in shared
                           vertices and edges, decided exactly); if that does not
                           settle, vertices kept at their nearest doubles and triangles
-                          rerouted through vertices within an ulp, then input
+                          rerouted through vertices within an ulp (in cycles of
+                          re-arranging while few conflicts are left), then input
                           vertices a few ulps apart merged and the input arranged
                           again, then coarser grids, then every vertex rounded on its
                           own, to coarser grids only at the conflicts;
