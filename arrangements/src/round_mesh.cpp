@@ -204,7 +204,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   };
   if (auto done = passes_at_level(0)) return *done;
 
-  // The last resorts make no new points: vertices stay at their nearest doubles while
+  // The last resorts make few or no new points: vertices stay at their nearest doubles while
   // slivers collapse and edges and faces are rerouted through vertices within an ulp
   // (round_rerouting.h), tried before the coarser levels because it moves the surface by
   // an ulp only; what that leaves, after the coarser levels, vertices on grids of their

@@ -37,8 +37,8 @@
 //   from a point of the previous pass's surface; report->max_move sums the largest move
 //   of each pass of the successful level (bounded from exact coordinate differences), so
 //   every vertex of the result lies within it of the exact arrangement's surface.
-//   Last resorts; rerouting and rounding per vertex do not arrange again, so they make no
-//   new points:
+//   Last resorts; rounding per vertex and the rounds of rerouting do not arrange again, so
+//   they make no new points (rerouting's cycles do, few):
 //   Rerouting (src/round_rerouting.h), when level 0 fails: every vertex stays at its
 //   nearest double; slivers whose apex lies within an ulp of the opposite edge collapse onto it, and of
 //   each violating pair the vertex within an ulp of the other's edge or face is put on it
