@@ -207,7 +207,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   // The last resorts make few or no new points: vertices stay at their nearest doubles while
   // slivers collapse and edges and faces are rerouted through vertices within an ulp
   // (round_rerouting.h), tried before the coarser levels because it moves the surface by
-  // an ulp only; what that leaves, after the coarser levels, vertices on grids of their
+  // an ulp per round only; what that leaves, after the coarser levels, vertices on grids of their
   // own, coarser only where needed (round_per_vertex.h). Arranging the result once more
   // proves it.
   std::vector<ExactVec3> exact(mesh.vertices.size());
@@ -229,7 +229,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   // Rerouting, in cycles: when one stalls, its best mesh is arranged again exactly (the
   // crossings its rounding left become points) and rounded to nearest, snapping new points
   // within an ulp to a double vertex as the passes do, and rerouting goes on from there.
-  // The bound adds each cycle's rounding move and an ulp for its rerouting.
+  // The bound adds each cycle's rounding move and an ulp per round of its rerouting.
   Rerouting rerouting;  // the first cycle's, for rounding per vertex below
   {
     RoundedMesh cycle_mesh;
@@ -245,8 +245,9 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
                                         options.max_passes - r.passes);
       r.passes += now.rounds;
       rerouted += now.rerouted;
-      // The surface of a rerouted triangle is within an ulp of the rounded one.
-      if (now.rerouted > 0) cycle_move += ulp;
+      // Each round of rerouting moves the surface by an ulp at most (a vertex put on an
+      // edge or a face lies within an ulp of it): rounds x ulp bounds the cycle's move.
+      if (now.rerouted > 0) cycle_move += ulp * now.rounds;
       RoundedMesh best = mesh_on_positions(at, now.triangles, now.source, now.label_set, now.label_sets).mesh;
       const std::size_t violations = now.violations;
       if (first) rerouting = std::move(now);
@@ -300,7 +301,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
 
   if (r.passes < options.max_passes) {
     // Rounding per vertex from the arrangement's triangles, then from the rerouted ones
-    // (which are within an ulp of the rounded ones: extra_move).
+    // (within an ulp per round of rerouting of the rounded ones: extra_move).
     auto per_vertex = [&](const std::vector<Tri>& triangles, const std::vector<std::int64_t>& source,
                           const std::vector<int>& label_set, const std::vector<LabelSet>& label_sets,
                           double extra_move) -> std::optional<RoundedMesh> {
@@ -314,7 +315,8 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     if (auto done = per_vertex(mesh.triangles, mesh.source, mesh.label_set, mesh.label_sets, 0.0)) return *done;
     if (rerouting.rerouted > 0) {
       r.rerouted = rerouting.rerouted;
-      if (auto done = per_vertex(rerouting.triangles, rerouting.source, rerouting.label_set, rerouting.label_sets, ulp))
+      if (auto done = per_vertex(rerouting.triangles, rerouting.source, rerouting.label_set, rerouting.label_sets,
+                                 ulp * rerouting.rounds))
         return *done;
       r.rerouted = 0;
     }

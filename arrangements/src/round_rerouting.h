@@ -16,8 +16,8 @@
 //     (in order along the edge); a triangle with one of them as a corner is dropped (a
 //     sliver, flat now).
 // The first round treats every sliver of the mesh, later rounds those of violating pairs.
-// Each round checks the result exactly (check_arrangement); the surface moves by at most
-// delta from the rounded one; provenance is kept (a piece of a split triangle keeps its
+// Each round checks the result exactly (check_arrangement); each round moves the surface by
+// at most delta (rounds x delta from the rounded one); provenance is kept (a piece of a split triangle keeps its
 // source and label set; a dropped sliver has no area beyond delta).
 //
 // Termination: at most max_rounds rounds; it stops earlier after 3 rounds in a row without

@@ -27,7 +27,7 @@
 //   two surfaces 1e-33 apart near a zero coordinate); passes at level 0 then keep making
 //   new points at that scale. When a pass does not reduce the intersecting pairs, grows the
 //   mesh by more than a tenth, or 4 passes did not succeed, rerouting is tried (below: it
-//   moves the surface by an ulp at most), then merging input vertices (below), then the
+//   moves the surface by an ulp per round at most), then merging input vertices (below), then the
 //   next level starts again
 //   from the exact arrangement, on the uniform grid of spacing h = 2^(8j) ulps of L
 //   (level j = 1..4; snap distance h): unlike the doubles, the grid is as coarse near
@@ -44,13 +44,13 @@
 //   each violating pair the vertex within an ulp of the other's edge or face is put on it
 //   (the triangles there split through it: snap rounding's hot-pixel rule); each round
 //   checks the result exactly. This settles operands placed in contact by transforms
-//   rounded to doubles (the EMBER pairs), with the surface moved by an ulp at most. When
+//   rounded to doubles (the EMBER pairs), with the surface moved by an ulp per round at most. When
 //   it stalls with conflicts on fewer than 5% of the triangles, its best mesh is arranged
 //   again (exactly: the crossings its rounding left become points), rounded to nearest
 //   with the snap of level 0 and rerouted again, in up to 8 cycles (stopping when the mesh
-//   grows by a tenth); each cycle adds its rounding move and an ulp to the bound. Layers
+//   grows by a tenth); each cycle adds its rounding move and an ulp per round to the bound. Layers
 //   crossing at grazing angles with few conflicts settle this way (three copies of a
-//   10 x 19 sphere rotated about its box centre: 7 cycles, 3.4e-16 of the diagonal).
+//   10 x 19 sphere rotated about its box centre: 7 cycles, 1.4e-15 of the diagonal).
 //   Rounding per vertex (src/round_per_vertex.h), when the levels fail too, from the
 //   arrangement's triangles, then from the rerouted ones. Every vertex of the exact
 //   arrangement goes to the nearest double; each round checks the rounded mesh exactly
