@@ -9,8 +9,9 @@ tritri.arrange(..., rounding="safe") returns a float64 mesh that is itself an ar
   exact, sources are those of the exact arrangement (the two layers merge into one with
   both labels), stats report the
   passes and a displacement bound;
-- two copies of a sphere with 19 meridians turned by pi (grazing crossings) need the last
-  resort, rounding per vertex: stats report round_coarsened > 0;
+- two and three copies of a sphere with 19 meridians turned about its box centre (grazing
+  crossings) need rerouting in cycles of arranging again: stats report round_rerouted > 0
+  and nothing on a coarser grid;
 - three copies of a 12 x 24 sphere turned by 2 pi / 3 (the copies' vertices a few ulps
   apart, the layers crossing wherever the rounding errors change sign) settle only by
   the last resort that merges input vertices: stats report round_merged_input > 0, and
@@ -93,20 +94,20 @@ def test_safe_rounding_is_an_arrangement_and_nearest_is_not(copies):
         assert set(safe["label_sets"][ls]) <= {0, 1}
 
 
-def test_grazing_copies_need_the_last_resort():
-    # An odd number of meridians: the copy turned by pi has its meridians between the
-    # original's, and the layers cross at grazing angles near the poles, where rounding and
-    # re-arranging keep making new crossings; the last resort (rounding per vertex) settles
-    # it with a few vertices on coarser grids, a few ulps off.
+@pytest.mark.parametrize("k", [2, 3])
+def test_grazing_copies_settle_by_rerouting_in_cycles(k):
+    # An odd number of meridians: the copies turned about the box's centre (not the axis)
+    # cross at grazing angles, where rounding and re-arranging keep making new crossings;
+    # rerouting, with its best mesh arranged again while few conflicts are left, settles
+    # it with every vertex at a nearest double, a few ulps per round off.
     V, F = uv_sphere((0.0, 0.0, 0.0), 1.0, 10, 19)
     centre = 0.5 * (V.min(axis=0) + V.max(axis=0))  # turned about its box's centre
-    V2, F2 = rotated_copies(V, F, 2, centre)
+    V2, F2 = rotated_copies(V, F, k, centre)
     out = tritri.arrange(V2, F2, rounding="safe")
     assert_is_arrangement(out)
     s = out["stats"]
-    assert 0 < s["round_coarsened"] < len(out["V"]) // 10
+    assert s["round_rerouted"] > 0 and s["round_coarsened"] == 0
     assert 0 < s["round_max_move_rel"] < 1e-12
-    assert s["round_rerouted"] == 0  # rerouting did not settle it: not reported
     plain = tritri.arrange(V2, F2)["stats"]
     assert plain["round_coarsened"] == plain["round_rerouted"] == 0
 
