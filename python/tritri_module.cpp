@@ -326,18 +326,16 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
   const arrangements::ArrangeOptions options = arrange_options(classifier, threads);
   arrangements::EigenArrangement out;
   std::vector<ExactVec3> exact;
-  std::optional<arrangements::TriangleSoup> input;  // for round_safe's last resort
+  arrangements::TriangleSoup input;  // for round_safe's last resort
   {
     nb::gil_scoped_release release;
     // Checked once, by the Eigen entry point (int64 indices and labels are range-checked
     // there before they are narrowed).
     const std::optional<LabelVector> Le = label_vector(labels);
     out = arrangements::detail::arrange_eigen(as_eigen(V), as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange",
-                                              exact_output ? &exact : nullptr);
-    if (round_safe)
-      input = arrangements::detail::eigen_soup(as_eigen(V), as_eigen(F), Le ? &*Le : nullptr, "tritri.arrange");
+                                              exact_output ? &exact : nullptr, round_safe ? &input : nullptr);
   }
-  if (round_safe) return safely_rounded_dict(std::move(out), threads, &*input);
+  if (round_safe) return safely_rounded_dict(std::move(out), threads, &input);
   const auto nv = static_cast<std::size_t>(out.V.rows());
   std::vector<double> v(3 * nv);
   std::vector<std::uint8_t> flags(nv);

@@ -400,11 +400,14 @@ TEST(RoundSafe, AnArrangementOfDoublesIsKeptAsItIs) {
 }
 
 TEST(RoundSafe, PassLimit) {
-  const ArrangeResult a = arrange(rotated_copies(uv_sphere({0.1, 0.2, 0.3}, 1.0, 12, 24), 5), ArrangeOptions{});
+  // Two copies of a 10 x 19 sphere turned by pi about its box centre: passes, rerouting and
+  // a cycle of it (11 passes and rounds), in half a second.
+  const ArrangeResult a = arrange(rotated_copies(uv_sphere({0, 0, 0}, 1.0, 10, 19), 2), ArrangeOptions{});
   EXPECT_THROW(round_safe(a.mesh, RoundSafeOptions{.max_passes = 0}), std::invalid_argument);
   RoundReport report;
   round_safe(a.mesh, RoundSafeOptions{}, &report);
   ASSERT_GT(report.passes, 1);
+  ASSERT_GT(report.reroute_cycles, 0);
   EXPECT_THROW(round_safe(a.mesh, RoundSafeOptions{.max_passes = report.passes - 1}), RoundingError);
   EXPECT_NO_THROW(round_safe(a.mesh, RoundSafeOptions{.max_passes = report.passes}));
 }

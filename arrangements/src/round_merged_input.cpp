@@ -42,9 +42,9 @@ MergedInput merge_close_input_vertices(const TriangleSoup& input, double delta) 
   for (std::size_t i = 0; i < nv; ++i) {
     const int v = static_cast<int>(i);
     grid.for_each_near(input.vertices[i], [&](int w) {
-      if (w <= v || find(parent, w) == find(parent, v) || !close(v, w)) return;
+      if (w <= v) return;
       const int a = find(parent, v), b = find(parent, w);
-      parent[std::max(a, b)] = std::min(a, b);  // the smallest index represents the cluster
+      if (a != b && close(v, w)) parent[std::max(a, b)] = std::min(a, b);  // the smallest index represents it
     });
   }
 

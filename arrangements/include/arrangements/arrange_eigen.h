@@ -174,12 +174,16 @@ void set_eigen_faces(Out& out, Mesh& mesh, ArrangeStats& stats) {
 
 // arrange() below for any Eigen matrix types (the Python module passes int64 indices and
 // labels: they are range-checked before they are narrowed). exact (optional): receives
-// tritri::to_exact of every output vertex (computed once, also for V_is_exact).
+// tritri::to_exact of every output vertex (computed once, also for V_is_exact). input
+// (optional): receives the soup arranged (round_safe's RoundSafeOptions::input), built once.
 template <class DV, class DF, class DL>
 EigenArrangement arrange_eigen(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<DF>& F,
                                const ArrangeOptions& options, const Eigen::MatrixBase<DL>* labels,
-                               const std::string& where, std::vector<ExactVec3>* exact = nullptr) {
-  ArrangeResult result = arrange_validated(eigen_soup(V, F, labels, where), options);
+                               const std::string& where, std::vector<ExactVec3>* exact = nullptr,
+                               TriangleSoup* input = nullptr) {
+  TriangleSoup soup = eigen_soup(V, F, labels, where);
+  ArrangeResult result = arrange_validated(soup, options);
+  if (input) *input = std::move(soup);
   OutputMesh& mesh = result.mesh;
 
   EigenArrangement out;
