@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/round_mesh.h"
 #include "round_merged_input.h"
+#include "round_per_vertex.h"
 #include "support/exact_soups.h"
 #include "support/loadable_meshes.h"
 #include "support/mesh_generators.h"
@@ -325,6 +327,37 @@ TEST(RoundSafe, GrazingLayersOfThreeCopiesAreRefusedCleanly) {
   EXPECT_THROW(round_safe(first.mesh, RoundSafeOptions{.input = &soup}, &report), RoundingError);
   EXPECT_EQ(report.merged_input, 0u);
   EXPECT_LE(report.passes, RoundSafeOptions{}.max_passes);
+}
+
+TEST(RoundSafe, RoundingPerVertexSettlesGrazingCopiesOnCoarserGridsAtTheConflicts) {
+  // The last resort on its own (round_safe reaches it only when rerouting and its cycles
+  // fail, which no input here does): two copies of a 10 x 19 sphere turned by pi about its
+  // box centre, from the nearest doubles of the exact arrangement. It settles with a few
+  // vertices on coarser grids, a few ulps off, and the result is an arrangement.
+  const ArrangeResult first = arrange(rotated_copies(uv_sphere({0, 0, 0}, 1.0, 10, 19), 2), ArrangeOptions{});
+  const OutputMesh& m = first.mesh;
+  std::vector<ExactVec3> exact;
+  std::vector<Vec3> nearest;
+  double largest = 0;
+  for (const tritri::ImplicitPoint& p : m.vertices) {
+    exact.push_back(tritri::to_exact(p));
+    nearest.push_back(tritri::to_double(exact.back()));
+    for (double c : nearest.back()) largest = std::max(largest, std::abs(c));
+  }
+  ASSERT_FALSE(check_arrangement(RoundedMesh{nearest, m.triangles, m.source, m.label_set, m.label_sets}).ok());
+  const std::optional<PerVertexRounding> per =
+      round_per_vertex(exact, nearest, m.triangles, m.source, m.label_set, m.label_sets, largest, 64);
+  ASSERT_TRUE(per.has_value());
+  EXPECT_TRUE(check_arrangement(per->mesh).ok());
+  const ArrangeStats s = arrange(as_input(per->mesh), ArrangeOptions{}).stats;
+  EXPECT_EQ(s.intersection_points + s.intersecting_pairs + s.merged_vertices + s.removed_degenerate, 0u);
+  EXPECT_EQ(s.out_triangles, per->mesh.triangles.size());
+  EXPECT_GT(per->coarsened, 0u);
+  EXPECT_LT(per->coarsened, nearest.size() / 10);
+  EXPECT_GT(per->grid, 0.0);
+  EXPECT_LE(per->max_move, std::ldexp(largest, -40));  // a few ulps: 2^-40 of the size is 2^12 ulps
+  std::printf("rounding per vertex, two copies 10 x 19: %d rounds, %zu vertices coarsened, move %.3g\n", per->rounds,
+              per->coarsened, per->max_move);
 }
 
 TEST(RoundSafe, MergingInputVerticesIsExactAndTransitive) {
