@@ -232,25 +232,22 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   // The bound adds each cycle's rounding move and an ulp per round of its rerouting.
   Rerouting rerouting;  // the first cycle's, for rounding per vertex below
   {
-    RoundedMesh cycle_mesh;
+    // The first cycle starts from the arrangement on its nearest doubles.
+    RoundedMesh cycle_mesh{nearest_positions, mesh.triangles, mesh.source, mesh.label_set, mesh.label_sets};
     double cycle_move = largest_distance(exact, nearest_positions);
     std::size_t rerouted = 0;
     for (int cycle = 0; cycle < kRerouteCycles && r.passes < options.max_passes; ++cycle) {
-      const bool first = cycle == 0;
-      const std::vector<Vec3>& at = first ? nearest_positions : cycle_mesh.vertices;
-      Rerouting now = reroute_conflicts(at, first ? mesh.triangles : cycle_mesh.triangles,
-                                        first ? mesh.source : cycle_mesh.source,
-                                        first ? mesh.label_set : cycle_mesh.label_set,
-                                        first ? mesh.label_sets : cycle_mesh.label_sets, ulp,
+      const RoundedMesh& c = cycle_mesh;
+      Rerouting now = reroute_conflicts(c.vertices, c.triangles, c.source, c.label_set, c.label_sets, ulp,
                                         options.max_passes - r.passes);
       r.passes += now.rounds;
       rerouted += now.rerouted;
       // Each round of rerouting moves the surface by an ulp at most (a vertex put on an
       // edge or a face lies within an ulp of it): rounds x ulp bounds the cycle's move.
       if (now.rerouted > 0) cycle_move += ulp * now.rounds;
-      RoundedMesh best = mesh_on_positions(at, now.triangles, now.source, now.label_set, now.label_sets).mesh;
+      RoundedMesh best = mesh_on_positions(c.vertices, now.triangles, now.source, now.label_set, now.label_sets).mesh;
       const std::size_t violations = now.violations;
-      if (first) rerouting = std::move(now);
+      if (cycle == 0) rerouting = std::move(now);
       if (violations == 0) {
         r.rerouted = rerouted;
         return settled(std::move(best), cycle_move, 0.0);
