@@ -11,10 +11,14 @@
 // - zero denominators, malformed and huge rationals and values beyond the double range
 //   are refused with InputError naming the file and the line; load_triangle_soup refuses
 //   exact files and names load_mesh_files.
+// - read_exact_mesh, the same OBJ / OFF readers with every decimal taken exactly, agrees with
+//   load_triangle_soup on real files: the same triangles, and each exact coordinate rounds
+//   (tritri::to_double, independent of the loader's from_chars) to the loader's double.
 // Expected values are CGAL::Gmpq rationals written by hand (or GMP powers of two).
 #include <gtest/gtest.h>
 
 #include <arrangements/load_triangle_soup.h>
+#include <arrangements/read_exact_mesh.h>
 #include <arrangements/write_mesh.h>
 #include <tritri/implicit_point.h>
 
@@ -29,6 +33,7 @@
 #include <variant>
 #include <vector>
 
+#include "support/shared_meshes.h"
 #include "support/temp_dir.h"
 
 namespace {
@@ -381,6 +386,35 @@ TEST(LoadMeshFiles, StlPlyAndOffNormalsStayDecimalOnly) {
       EXPECT_EQ(std::string(e.what()), path + ": " + message);
     }
   }
+}
+
+// ---- read_exact_mesh -------------------------------------------------------------------
+
+TEST(ReadExactMesh, AgreesWithLoadTriangleSoupOnRealObjAndOffFiles) {
+  const std::filesystem::path dir = tritri_test::shared_meshes_dir();
+  TRITRI_REQUIRE_DATA(dir);
+  // OBJ and OFF files whose decimals are mostly not doubles ("0.063974"), parsed both ways.
+  const char* names[] = {"cgal_data/pig.off",         "cgal_data/mask_cone.off",        "cgal_data/couplingdown.off",
+                         "cgal_data/knot1.off",       "common3d/teapot.obj",            "libigl_tutorial/truck.obj",
+                         "cherchi_booleans/sphere1.obj", "manifold_tests/Offset1.obj"};
+  std::vector<std::filesystem::path> files;
+  for (const char* name : names) {
+    TRITRI_REQUIRE_DATA(dir / name);
+    files.push_back(dir / name);
+  }
+  std::size_t non_doubles = 0;
+  for (const auto& f : files) {
+    SCOPED_TRACE(f.string());
+    const arrangements::ExactMesh exact = arrangements::read_exact_mesh(f.string());
+    const TriangleSoup loaded = load_triangle_soup(f.string());
+    ASSERT_EQ(exact.vertices.size(), loaded.vertices.size());
+    EXPECT_EQ(exact.triangles, loaded.triangles);
+    for (std::size_t v = 0; v < exact.vertices.size(); ++v) {
+      EXPECT_EQ(tritri::to_double(exact.vertices[v]), loaded.vertices[v]) << "vertex " << v;
+      for (int k = 0; k < 3; ++k) non_doubles += exact.vertices[v][k] != Gmpq(loaded.vertices[v][k]);
+    }
+  }
+  EXPECT_GT(non_doubles, 0u) << "no decimal of these files was inexact: the test compares nothing exact";
 }
 
 }  // namespace

@@ -3,40 +3,36 @@
 // read_exact_mesh(path): read an OBJ or OFF mesh with exact rational coordinates, as
 // write_mesh(path, mesh, {.exact = true}) writes them (write_mesh.h), or with ordinary
 // decimal coordinates, each read as the exact rational value of its decimal text (so
-// "0.1" is 1/10, not the double nearest to it). For the pipeline's input use
-// load_mesh_files (load_triangle_soup.h): it reads the same rationals (with the same
-// grammar) but decimals as doubles, triangulates polygons and accepts more of the formats.
+// "0.1" is 1/10, not the double nearest to it). The files are read by the OBJ and OFF
+// readers of load_mesh_files (load_triangle_soup.h), with its grammar, checks and
+// messages; only the decimals differ: load_mesh_files reads them as the nearest double
+// (for the pipeline's input), read_exact_mesh as their exact value.
 //
 //   path     an .obj or .off file (the extension decides, any case)
 // returns ExactMesh
 //   vertices   #V exact coordinates, in file order
-//   triangles  #F vertex indices into `vertices`; a face with n > 3 corners becomes the
-//              fan (c0, c_i, c_(i+1)), i = 1 .. n-2 (what load_triangle_soup makes of a
-//              convex polygon; arrange writes triangles only)
+//   triangles  #F vertex indices into `vertices`; a face with n > 3 corners becomes n - 2
+//              triangles, as load_mesh_files triangulates it (on the exact coordinates;
+//              arrange writes triangles only)
 //
-// Numbers (one whitespace-free token each):
-//   rational  [+-]? digits ( "/" digits )?   the denominator not zero; need not be reduced
+// Numbers (one whitespace-free token each), as load_triangle_soup.h describes them:
+//   rational  [+-]? digits "/" digits, the denominator not zero; need not be reduced
 //   decimal   [+-]? ( digits ( "." digits? )? | "." digits ) ( [eE] [+-]? digits )?
-//             with a decimal exponent of at most 4096 in absolute value (larger ones would
-//             make huge numbers; no double needs one)
-// OBJ: one statement per line; "v X Y Z" (exactly three numbers), "f c1 c2 c3 ..." with
-//   corners "i", "i/t", "i/t/n" or "i//n" (1-based, negative = relative to the vertices
-//   defined so far); '#' starts a comment; vt, vn, vp, g, o, s, usemtl, mtllib are
-//   ignored; any other statement is refused.
-// OFF: the line "OFF" (the counts may follow on the same line), the line "#V #F #E", #V
-//   lines "X Y Z", #F lines "n i1 ... in" (0-based), then nothing but blank lines and
-//   comments; '#' starts a comment. Other OFF variants (COFF, NOFF, binary, ...) are
-//   refused.
-// A mesh without faces is returned as it is (write_mesh writes empty meshes too).
+//   at most 100000 digits (in a numerator, a denominator or a decimal), and a decimal
+//   exponent of at most 4096 in absolute value (larger ones would make huge numbers; no
+//   double needs one). Unlike load_mesh_files, any magnitude is kept (a coordinate beyond
+//   the double range is refused there, since the pipeline needs finite boxes).
+// A file without faces is returned as it is (write_mesh writes empty meshes too).
 //
-// Throws InputError (input_error.h) naming the file and the line: a missing or unreadable
-// file (unreadable_file), another extension (unknown_format), another OFF variant
-// (unsupported_variant), a malformed number, line or count (malformed), an index out of
-// range (index_out_of_range), a face with fewer than 3 corners (too_few_corners), more than
-// INT_MAX vertices or triangles (too_large). Never crashes on any input.
+// Throws InputError (input_error.h) naming the file and the line, of the kind
+// load_mesh_files gives for the same text: unreadable_file, unknown_format (another
+// extension), unsupported_variant (e.g. OBJ "l" statements, 4OFF), malformed,
+// non_finite_coordinate ("nan", "inf"), index_out_of_range, too_few_corners, too_large
+// (too many digits, a larger exponent, more than INT_MAX vertices or triangles). Never
+// crashes on any input.
 //
-// Exact: no rounding anywhere. Cost: linear in the file size (plus the rational
-// arithmetic of the decimal exponents).
+// Exact: no rounding anywhere. Cost: linear in the file size, plus the rational arithmetic
+// of every coordinate (GMP; a few times slower than reading doubles).
 #pragma once
 
 #include <CGAL/Gmpq.h>

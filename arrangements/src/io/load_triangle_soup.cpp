@@ -84,17 +84,6 @@ std::size_t FileBytes::refill(std::size_t n) {
   return end_;
 }
 
-std::string read_whole_file(const std::string& path) {
-  FileBytes in(path);
-  std::string bytes;
-  bytes.reserve(static_cast<std::size_t>(in.size()));
-  while (in.fill(1) > 0) {
-    bytes.append(in.data(), in.available());
-    in.consume(in.available());
-  }
-  return bytes;
-}
-
 }  // namespace detail
 
 using detail::MeshFormat;

@@ -1,10 +1,9 @@
 // arrangements/src/io/mesh_file_checks.h (internal to the mesh readers and writers)
 //
-// Helpers shared by the mesh readers (load_triangle_soup's streaming readers and
-// read_exact_mesh, which both open files through FileBytes, see mesh_reader.h) and by
-// mesh_format.h and write_mesh: refusing with InputError ("PATH: what"), quoting tokens for
-// messages (the one place where bytes that are not printable are escaped), strict number
-// parsing, and a cursor over the lines of text held in memory.
+// Helpers shared by the mesh readers (the streaming readers of mesh_reader.h, for
+// load_triangle_soup and read_exact_mesh) and by mesh_format.h and write_mesh: refusing
+// with InputError ("PATH: what"), quoting tokens for messages (the one place where bytes
+// that are not printable are escaped), strict number parsing, tokens of a line.
 #pragma once
 
 #include <charconv>
@@ -95,35 +94,6 @@ bool parse_integer(std::string_view token, T& value) {
 }
 
 inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f'; }
-
-// Walks text held in memory line by line, counting lines (1-based).
-class TextCursor {
- public:
-  explicit TextCursor(std::string_view text) : text_(text) {}
-
-  bool at_end() const { return pos_ >= text_.size(); }
-  long line() const { return line_; }  // of the line the cursor is on
-  // The text up to the end of the current line (without '\n' and a trailing '\r'); the
-  // cursor moves to the start of the next line.
-  std::string_view rest_of_line() {
-    const std::size_t begin = pos_;
-    std::size_t end = text_.find('\n', pos_);
-    if (end == std::string_view::npos) end = text_.size();
-    pos_ = end;
-    if (pos_ < text_.size()) {
-      ++pos_;
-      ++line_;
-    }
-    std::string_view s = text_.substr(begin, end - begin);
-    if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
-    return s;
-  }
-
- private:
-  std::string_view text_;
-  std::size_t pos_ = 0;
-  long line_ = 1;
-};
 
 // Whitespace-separated tokens of one line.
 class LineTokens {

@@ -4,12 +4,12 @@
 // read_ply.cpp): each reads its file as a stream and validates and fills a SoupBuilder in
 // the same pass, so memory holds the parsed arrays plus one buffer of the file.
 //   FileBytes    the file in chunks of 1 MiB (a longer line grows the buffer); the one
-//                place where a mesh file is opened and read (read_whole_file for
-//                read_exact_mesh too)
+//                place where a mesh file is opened and read
 //   LineReader   lines ending in LF, CRLF or CR (a UTF-8 BOM at the start is skipped)
 //   TokenReader  whitespace-separated tokens across lines, with their line numbers
 //   SoupBuilder  vertices and faces; polygons are triangulated by finish(); coordinate
-//                tokens that are not decimals go to other_coordinate (exact rationals)
+//                tokens that are not decimals go to other_coordinate (exact rationals),
+//                every coordinate token does for read_exact_mesh (decimals_exact)
 // Numbers and messages: parse_real, parse_integer, quoted, refuse (mesh_file_checks.h).
 #pragma once
 
@@ -61,10 +61,6 @@ class FileBytes {
   std::uint64_t size_ = 0, consumed_ = 0;
   bool eof_ = false;
 };
-
-// The whole file, read through FileBytes (and refused as FileBytes refuses it): for
-// read_exact_mesh, which parses text held in memory.
-std::string read_whole_file(const std::string& path);
 
 inline bool is_line_end(char c) { return c == '\n' || c == '\r'; }
 
@@ -158,9 +154,15 @@ inline constexpr std::size_t kMaxRationalDigits = 100000;
 //           is not one is refused (unsupported_variant, naming load_mesh_files).
 //   exact = true (load_mesh_files): such rationals are kept exactly; after finish(),
 //           exact_vertices then holds every vertex (see below).
+//   decimals_exact = true (read_exact_mesh; implies exact): decimals too are read as their
+//           exact value (rational_token.h's parse_exact_decimal), so the readers hand every
+//           coordinate to other_coordinate.
 class SoupBuilder {
  public:
-  explicit SoupBuilder(const std::string& path, bool exact = false) : path_(path), exact_allowed_(exact) {}
+  explicit SoupBuilder(const std::string& path, bool exact = false, bool decimals_exact = false)
+      : path_(path), exact_allowed_(exact || decimals_exact), decimals_exact_(decimals_exact) {}
+
+  bool decimals_exact() const { return decimals_exact_; }
 
   // The vertices as doubles. Before finish(): a vertex with an exact coordinate has an
   // unspecified double there. After finish(): empty when exact_vertices is not.
@@ -181,7 +183,8 @@ class SoupBuilder {
     vertices.push_back(v);
   }
   // The slow path of coordinate `axis` (0, 1, 2) of the vertex being read (the next
-  // add_vertex), for a token that parse_real did not accept (r): a rational N/D
+  // add_vertex), for a token that parse_real did not accept (r), or for every token when
+  // decimals_exact (a decimal then taken exactly, as a rational): a rational N/D
   // (rational_token.h) that is exactly a double becomes `value` ("-0/N" is -0.0, as the
   // decimal "-0" is); another rational is kept for that vertex (exact) or refused (not
   // exact). Anything else is refused as refuse_coordinate refuses it, and so are a zero
@@ -211,6 +214,7 @@ class SoupBuilder {
   void triangulate_polygons(const std::vector<Coordinates>& V);
   const std::string& path_;
   bool exact_allowed_;
+  bool decimals_exact_;
   std::vector<int> polygon_corners_;
   std::vector<std::size_t> polygon_start_;     // into polygon_corners_, per polygon
   std::vector<std::size_t> polygon_triangle_;  // its first slot in triangles, per polygon

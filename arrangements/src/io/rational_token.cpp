@@ -51,6 +51,52 @@ RationalParse parse_rational(std::string_view token, CGAL::Gmpq& value, std::siz
   return RationalParse::ok;
 }
 
+RationalParse parse_exact_decimal(std::string_view token, CGAL::Gmpq& value, std::size_t max_digits) {
+  bool negative = false;
+  if (!token.empty() && (token.front() == '+' || token.front() == '-')) {
+    negative = token.front() == '-';
+    token.remove_prefix(1);
+  }
+  const std::size_t e_pos = token.find_first_of("eE");
+  const std::string_view mantissa = token.substr(0, e_pos);
+  long exponent = 0;
+  if (e_pos != std::string_view::npos) {
+    std::string_view e = token.substr(e_pos + 1);
+    bool e_negative = false;
+    if (!e.empty() && (e.front() == '+' || e.front() == '-')) {
+      e_negative = e.front() == '-';
+      e.remove_prefix(1);
+    }
+    if (e.empty() || digit_run(e) != e.size()) return RationalParse::not_rational;
+    for (char c : e) {
+      exponent = exponent * 10 + (c - '0');
+      if (exponent > kMaxDecimalExponent) return RationalParse::huge;
+    }
+    if (e_negative) exponent = -exponent;
+  }
+  const std::size_t point = mantissa.find('.');
+  const std::string_view whole = mantissa.substr(0, point);
+  const std::string_view fraction = point == std::string_view::npos ? std::string_view() : mantissa.substr(point + 1);
+  if (whole.empty() && fraction.empty()) return RationalParse::not_rational;
+  if (digit_run(whole) != whole.size() || digit_run(fraction) != fraction.size()) return RationalParse::not_rational;
+  if (whole.size() + fraction.size() > max_digits) return RationalParse::huge;
+  // value = (the digits of whole and fraction as one integer) * 10^(exponent - #fraction digits)
+  ScopedMpq r;
+  mpz_ptr num = mpq_numref(r.q);
+  mpz_ptr den = mpq_denref(r.q);
+  mpz_set_str(num, (std::string(whole) + std::string(fraction)).c_str(), 10);
+  const long scale = exponent - static_cast<long>(fraction.size());
+  mpz_ui_pow_ui(den, 10, static_cast<unsigned long>(scale >= 0 ? scale : -scale));
+  if (scale >= 0) {
+    mpz_mul(num, num, den);
+    mpz_set_ui(den, 1);
+  }
+  mpq_canonicalize(r.q);
+  if (negative) mpq_neg(r.q, r.q);
+  value = CGAL::Gmpq(r.q);
+  return RationalParse::ok;
+}
+
 bool beyond_double_range(const CGAL::Gmpq& q) {
   static const CGAL::Gmpq largest(std::numeric_limits<double>::max());  // exact: a double is a rational
   return q > largest || q < -largest;

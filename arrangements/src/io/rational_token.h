@@ -1,5 +1,5 @@
-// arrangements/src/io/rational_token.h (internal to the mesh readers: SoupBuilder for
-// load_mesh_files, and read_exact_mesh)
+// arrangements/src/io/rational_token.h (internal to the mesh readers: SoupBuilder, for
+// load_mesh_files and read_exact_mesh)
 //
 // The rational coordinate tokens that write_mesh writes with exact = true, and the tests a
 // loader makes on their values.
@@ -15,6 +15,12 @@
 // digits (checked before any arithmetic); zero_denominator for "N/0".
 // Cost: linear in the token's length for the checks; GMP's conversion of the digits
 // (subquadratic) for ok.
+//
+// RationalParse parse_exact_decimal(token, value, max_digits)
+//   The exact value of a decimal token, [+-]? ( digits ( "." digits? )? | "." digits )
+//   ( [eE] [+-]? digits )? ("0.1" is 1/10, not the double nearest to it): ok; not_rational
+//   for any other token; huge when it has more than max_digits digits or an exponent beyond
+//   +-kMaxDecimalExponent (larger ones make huge numbers; no double needs one).
 //
 // bool beyond_double_range(q): |q| > the largest finite double (DBL_MAX), exactly.
 //
@@ -33,7 +39,11 @@ namespace arrangements::detail {
 
 enum class RationalParse { ok, not_rational, huge, zero_denominator };
 
+inline constexpr long kMaxDecimalExponent = 4096;
+
 RationalParse parse_rational(std::string_view token, CGAL::Gmpq& value, std::size_t max_digits);
+
+RationalParse parse_exact_decimal(std::string_view token, CGAL::Gmpq& value, std::size_t max_digits);
 
 bool beyond_double_range(const CGAL::Gmpq& q);
 

@@ -91,7 +91,7 @@ class ObjReader {
         refuse_at_line(InputErrorKind::malformed, path_, line,
                        "vertex " + std::to_string(out_.vertices.size() + 1) + " has fewer than 3 coordinates");
       const RealParse r = parse_real(token, v[axis]);
-      if (r != RealParse::ok)  // a rational, or refused
+      if (r != RealParse::ok || out_.decimals_exact())  // a rational, an exact decimal, or refused
         out_.other_coordinate(line, "vertex " + std::to_string(out_.vertices.size() + 1) + ": coordinate ", axis, token,
                               r, v[axis]);
     }

@@ -42,7 +42,7 @@ class OffReader {
       for (std::size_t i = 0; i < numbers_per_vertex; ++i) {
         double value;
         const RealParse r = parse_real(entries_[i], value);
-        if (r != RealParse::ok && i < 3)  // a rational, or refused
+        if ((r != RealParse::ok || out_.decimals_exact()) && i < 3)  // a rational, an exact decimal, or refused
           out_.other_coordinate(line_, what() + ": coordinate ", static_cast<int>(i), entries_[i], r, value);
         else if (r != RealParse::ok)
           refuse_coordinate(path_, line_, r, what() + ": normal coordinate ", entries_[i]);

@@ -29,8 +29,10 @@ void SoupBuilder::add_polygon(std::span<const int> corners) {
 void SoupBuilder::other_coordinate(long line, const std::string& what, int axis, std::string_view token, RealParse r,
                                    double& value) {
   CGAL::Gmpq q;
-  const RationalParse p =
-      r == RealParse::non_finite ? RationalParse::not_rational : parse_rational(token, q, kMaxRationalDigits);
+  // A decimal beyond the double range is non_finite for parse_real, but has an exact value.
+  RationalParse p = RationalParse::not_rational;
+  if (r != RealParse::non_finite) p = parse_rational(token, q, kMaxRationalDigits);
+  if (p == RationalParse::not_rational && decimals_exact_) p = parse_exact_decimal(token, q, kMaxRationalDigits);
   switch (p) {
     case RationalParse::ok:
       break;
@@ -40,17 +42,21 @@ void SoupBuilder::other_coordinate(long line, const std::string& what, int axis,
                        what + quoted(token) + " is not a number (a decimal, or a rational N/D of decimal digits)");
       refuse_coordinate(path_, line, r, what, token);
     case RationalParse::huge:
+      if (token.find('/') == std::string_view::npos)
+        refuse_at_line(InputErrorKind::too_large, path_, line,
+                       what + quoted(token) + " is a huge decimal: more than " + std::to_string(kMaxRationalDigits) +
+                           " digits, or an exponent beyond +-" + std::to_string(kMaxDecimalExponent));
       refuse_at_line(InputErrorKind::too_large, path_, line,
                      what + quoted(token) + " is a huge rational: its numerator or denominator has more than " +
                          std::to_string(kMaxRationalDigits) + " digits");
     case RationalParse::zero_denominator:
       refuse_at_line(InputErrorKind::malformed, path_, line, what + quoted(token) + " has a zero denominator");
   }
-  if (beyond_double_range(q))
+  if (!decimals_exact_ && beyond_double_range(q))  // read_exact_mesh reads any rational
     refuse_at_line(
         InputErrorKind::non_finite_coordinate, path_, line,
         what + quoted(token) + " is beyond the largest finite double (the pipeline needs finite bounding boxes)");
-  if (exact_double(q, value)) {
+  if (!beyond_double_range(q) && exact_double(q, value)) {
     if (value == 0 && token.front() == '-') value = -0.0;  // as the decimal "-0" reads
     return;
   }
