@@ -208,7 +208,7 @@ std::vector<TriangleSoup> three_rotated(const TriangleSoup& s) {
 }
 
 void check_generated(const std::string& what, const TriangleSoup& a, const TriangleSoup& b, const TriangleSoup& c) {
-  const std::int64_t na = static_cast<std::int64_t>(a.triangles.size()), nb = static_cast<std::int64_t>(b.triangles.size());
+  const auto na = static_cast<std::int64_t>(a.triangles.size()), nb = static_cast<std::int64_t>(b.triangles.size());
   check_triple(what, operand(a, 0, 0), operand(b, 1, na), operand(c, 2, na + nb));
 }
 
@@ -232,7 +232,7 @@ TEST(Associativity, GeneratedTripleWithARationalOperand) {
   const TriangleSoup a = uv_sphere({0, 0, 0}, 1.0, 8, 12), b = uv_sphere({1, 0.05, 0.02}, 0.95, 7, 11);
   ExactTriangleSoup c = arrangements::to_exact(uv_sphere({0.45, 0.85, -0.03}, 1.05, 9, 10));
   for (ExactVec3& v : c.vertices) v[0] += Gmpq(1, 3);
-  const std::int64_t na = static_cast<std::int64_t>(a.triangles.size()), nb = static_cast<std::int64_t>(b.triangles.size());
+  const auto na = static_cast<std::int64_t>(a.triangles.size()), nb = static_cast<std::int64_t>(b.triangles.size());
   check_triple("three spheres, the third moved by 1/3", operand(a, 0, 0), operand(b, 1, na),
                operand(c, false, 2, na + nb));
 }
@@ -288,7 +288,7 @@ TEST(Associativity, McutPairs) {
   for (const std::string& id : ids) {
     const TriangleSoup a = load_triangle_soup((dir / ("src-mesh" + id + ".off")).string());
     const TriangleSoup b = load_triangle_soup((dir / ("cut-mesh" + id + ".off")).string());
-    const std::int64_t na = static_cast<std::int64_t>(a.triangles.size()), nb = static_cast<std::int64_t>(b.triangles.size());
+    const auto na = static_cast<std::int64_t>(a.triangles.size()), nb = static_cast<std::int64_t>(b.triangles.size());
     const Frame f = frame({&a, &b});
     const Operand A = operand(a, 0, 0), B = operand(b, 1, na);
     check_triple("MCUT " + id + " with a sphere across both", A, B,
@@ -306,7 +306,7 @@ TEST(Associativity, SharedSpheres) {
   TRITRI_REQUIRE_DATA(dir / "sphere2.obj");
   const TriangleSoup a = load_triangle_soup((dir / "sphere1.obj").string());
   const TriangleSoup b = load_triangle_soup((dir / "sphere2.obj").string());
-  const std::int64_t na = static_cast<std::int64_t>(a.triangles.size()), nb = static_cast<std::int64_t>(b.triangles.size());
+  const auto na = static_cast<std::int64_t>(a.triangles.size()), nb = static_cast<std::int64_t>(b.triangles.size());
   const Frame f = frame({&a, &b});
   check_triple("sphere1, sphere2, sphere2 turned", operand(a, 0, 0), operand(b, 1, na),
                operand(rotated_rational(b, f.centre, f.extent), false, 2, na + nb));

@@ -276,13 +276,15 @@ void check_against_reference(const Scene& scene) {
   const ExactArrangeResult r = arrange(in, ArrangeOptions{});
   const ExactOutputMesh& m = r.mesh;
   std::vector<KT> tris;
-  for (const Tri& t : in.triangles) tris.emplace_back(kp(in.vertices[t[0]]), kp(in.vertices[t[1]]), kp(in.vertices[t[2]]));
+  for (const Tri& t : in.triangles)
+    tris.emplace_back(kp(in.vertices[t[0]]), kp(in.vertices[t[1]]), kp(in.vertices[t[2]]));
   const Reference ref = reference(tris);
   const std::vector<ExactVec3> out = sorted_vertices(m);
   auto is_output = [&](const ExactVec3& v) { return std::binary_search(out.begin(), out.end(), v); };
 
   // (a)
-  for (const ExactVec3& v : ref.pair_vertices) EXPECT_TRUE(is_output(v)) << "pairwise intersection vertex missing: " << str(v);
+  for (const ExactVec3& v : ref.pair_vertices)
+    EXPECT_TRUE(is_output(v)) << "pairwise intersection vertex missing: " << str(v);
   for (const ExactVec3& v : in.vertices) EXPECT_TRUE(is_output(v)) << "input vertex missing: " << str(v);
   // (b)
   std::vector<ExactVec3> known = in.vertices;
@@ -453,7 +455,8 @@ long long stat(const std::string& json, const std::string& key) {
 TEST(ExactRationalCli, ArrangesAFileWithThirds) {
   tritri_test::TempDir dir;
   const std::string in = dir.write("thirds.obj", kThirds), out = dir.path("out.obj");
-  const tritri_test::Exit e = tritri_test::spawn(ARRANGE_BIN, {in, "--stats", "--check", "-o", out, "--exact"}, dir.path());
+  const tritri_test::Exit e =
+      tritri_test::spawn(ARRANGE_BIN, {in, "--stats", "--check", "-o", out, "--exact"}, dir.path());
   ASSERT_TRUE(e.exited);
   ASSERT_EQ(e.code, 0) << e.err;
   for (const auto& [key, value] : std::vector<std::pair<std::string, long long>>{{"in_triangles", 2},

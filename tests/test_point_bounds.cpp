@@ -131,7 +131,8 @@ TEST(PointBounds, BoxesContainThePointsAndDecideOrient2dExactly) {
           if (n >= left) break;
           const tritri::BoxBounds box = tritri::box_bounds(sample.point);
           for (int k = 0; k < 3; ++k)
-            EXPECT_TRUE(contains(box[k], sample.exact[k])) << "axis " << k << ": " << tritri_test::describe(sample.recipe);
+            EXPECT_TRUE(contains(box[k], sample.exact[k]))
+                << "axis " << k << ": " << tritri_test::describe(sample.recipe);
           const auto& a = s.points[explicit_points[rng.uniform(0, static_cast<int>(explicit_points.size()) - 1)]];
           const auto& b = s.points[explicit_points[rng.uniform(0, static_cast<int>(explicit_points.size()) - 1)]];
           for (tritri::Plane plane : {tritri::Plane::XY, tritri::Plane::YZ, tritri::Plane::ZX}) {

@@ -69,7 +69,9 @@ tritri::Result classify_rows(const RationalMesh& a, int i, const RationalMesh& b
   return tritri::classify<Unfiltered>(p(a, i, 0), p(a, i, 1), p(a, i, 2), p(b, j, 0), p(b, j, 1), p(b, j, 2));
 }
 
-std::vector<IntersectingPair> brute_force_self(const RationalMesh& m) { return tritri_test::brute_force_self(m, classify_rows); }
+std::vector<IntersectingPair> brute_force_self(const RationalMesh& m) {
+  return tritri_test::brute_force_self(m, classify_rows);
+}
 std::vector<IntersectingPair> brute_force_two(const RationalMesh& a, const RationalMesh& b) {
   return tritri_test::brute_force_two(a, b, classify_rows);
 }
@@ -126,7 +128,10 @@ TEST(RationalBatch, NonDyadicMeshesEqualTheBruteForceRule) {
   const RationalMesh above = non_dyadic(arrangements::grid(4, 1.0, 0.0), Gmpq(1, 21));
   const RationalMesh on_edges = non_dyadic(arrangements::grid(3, 1.0, 0.0, 1.0, 0.5), Gmpq(0));
   for (const RationalMesh* other : std::vector<const RationalMesh*>{&shifted, &slanted, &above, &on_edges}) {
-    SCOPED_TRACE(other == &shifted ? "shifted" : other == &slanted ? "slanted" : other == &above ? "above" : "on edges");
+    SCOPED_TRACE(other == &shifted   ? "shifted"
+                 : other == &slanted ? "slanted"
+                 : other == &above   ? "above"
+                                     : "on edges");
     const RationalMesh m = joined(base, *other);
     const auto expected = brute_force_self(m);
     EXPECT_EQ(tritri::self_intersections(m.V, m.F), expected);

@@ -53,7 +53,9 @@ tritri::Result classify_rows(const Mesh& a, int i, const Mesh& b, int j) {
   return tritri::classify<tritri::DoubleKernel>(p(a, i, 0), p(a, i, 1), p(a, i, 2), p(b, j, 0), p(b, j, 1), p(b, j, 2));
 }
 
-std::vector<IntersectingPair> brute_force_self(const Mesh& m) { return tritri_test::brute_force_self(m, classify_rows); }
+std::vector<IntersectingPair> brute_force_self(const Mesh& m) {
+  return tritri_test::brute_force_self(m, classify_rows);
+}
 std::vector<IntersectingPair> brute_force_two(const Mesh& a, const Mesh& b) {
   return tritri_test::brute_force_two(a, b, classify_rows);
 }

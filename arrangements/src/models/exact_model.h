@@ -235,7 +235,8 @@ struct ExactModel {
   // a plus the exact normal: orient3d(a, b, c, a + n) = |n|^2 > 0 for a proper triangle.
   static Vertex auxiliary_point(const Vertex& a, const Vertex& b, const Vertex& c) {
     const ExactPoint &ea = a.exact(), &eb = b.exact(), &ec = c.exact();
-    const auto n = tritri::detail::cross(tritri::detail::difference<ET>(eb, ea), tritri::detail::difference<ET>(ec, ea));
+    const auto n =
+        tritri::detail::cross(tritri::detail::difference<ET>(eb, ea), tritri::detail::difference<ET>(ec, ea));
     if (n[0] == 0 && n[1] == 0 && n[2] == 0) throw std::logic_error("auxiliary_point: degenerate triangle");
     return make(ea.x() + n[0], ea.y() + n[1], ea.z() + n[2]);
   }

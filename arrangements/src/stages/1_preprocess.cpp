@@ -131,7 +131,8 @@ BasicTriangleSoup<typename M::Vertex> preprocess(const BasicTriangleSoup<typenam
     const Tri p = {position_of[tri[0]], position_of[tri[1]], position_of[tri[2]]};
     corners[t] = key[t] = p;
     std::sort(key[t].begin(), key[t].end());
-    degenerate[t] = p[0] == p[1] || p[1] == p[2] || p[0] == p[2] || collinear<M>(positions[p[0]], positions[p[1]], positions[p[2]]);
+    degenerate[t] = p[0] == p[1] || p[1] == p[2] || p[0] == p[2] ||
+                    collinear<M>(positions[p[0]], positions[p[1]], positions[p[2]]);
   });
   // The first non-degenerate triangle with the same corners (degenerate ones get distinct
   // keys, so they match nothing).

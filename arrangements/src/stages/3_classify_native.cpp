@@ -234,8 +234,8 @@ class NativePair {
 }  // namespace
 
 template <class K>
-bool classify_pair_native(const K& k, const std::vector<typename K::Point>& V, const std::vector<Tri>& F, int ta, int tb,
-                          PairIntersection& out) {
+bool classify_pair_native(const K& k, const std::vector<typename K::Point>& V, const std::vector<Tri>& F, int ta,
+                          int tb, PairIntersection& out) {
   return NativePair<K>(k, V, F, ta, tb, out).run();
 }
 

@@ -11,9 +11,9 @@
 //          not concatenated).
 // Pairs that share vertices and meet only there give no record (the classifiers drop
 // them); in the pipeline stage 2 has already dropped most of them (detect_pairs).
-// counts: null (the default) runs every predicate on M::Kernel, nothing counted; otherwise every predicate of the classifiers runs
-// through a tritri::CountingKernel over it, one PredicateCounts per chunk of pairs, and
-// their sums are added to *counts.
+// counts: null (the default) runs every predicate on M::Kernel, nothing counted; otherwise
+// every predicate of the classifiers runs through a tritri::CountingKernel over it, one
+// PredicateCounts per chunk of pairs, and their sums are added to *counts.
 // planes: empty, or #F cached planes (tritri::plane_filter of each triangle, as stage 2
 // computes them): then, when not counting, each pair is classified with
 // tritri::PlaneCachedKernel, whose answers are DoubleKernel's, found cheaper.

@@ -10,8 +10,8 @@
 namespace arrangements {
 
 template <class K>
-bool classify_pair_tritri(const K& k, const std::vector<typename K::Point>& V, const std::vector<Tri>& F, int ta, int tb,
-                          PairIntersection& out) {
+bool classify_pair_tritri(const K& k, const std::vector<typename K::Point>& V, const std::vector<Tri>& F, int ta,
+                          int tb, PairIntersection& out) {
   const Tri& a = F[ta];
   const Tri& b = F[tb];
   const tritri::Result r = tritri::classify(k, V[a[0]], V[a[1]], V[a[2]], V[b[0]], V[b[1]], V[b[2]]);

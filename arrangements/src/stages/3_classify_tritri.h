@@ -29,8 +29,8 @@
 namespace arrangements {
 
 template <class K>
-bool classify_pair_tritri(const K& k, const std::vector<typename K::Point>& V, const std::vector<Tri>& F, int ta, int tb,
-                          PairIntersection& out);
+bool classify_pair_tritri(const K& k, const std::vector<typename K::Point>& V, const std::vector<Tri>& F, int ta,
+                          int tb, PairIntersection& out);
 extern template bool classify_pair_tritri(const tritri::DoubleKernel&, const std::vector<Vec3>&,
                                           const std::vector<Tri>&, int, int, PairIntersection&);
 extern template bool classify_pair_tritri(const tritri::PlaneCachedKernel&, const std::vector<Vec3>&,

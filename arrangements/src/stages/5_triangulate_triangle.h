@@ -1,11 +1,12 @@
 // arrangements/src/stages/5_triangulate_triangle.h (internal to stage 5)
 //
-// split_triangle_of<M>(soup, graph, t), for a point model M (models/point_model.h): the constrained triangulation of one soup triangle t
-// by its intersection points and constraint segments (and those of its coplanar
-// partners), built by point insertion and constraint insertion with edge flips (Sloan's
-// algorithm). Returns a Piece: the local triangles (graph point ids, or -1 - k for the
-// k-th new TPI of this triangle, where two constraints cross), the new TPIs, and for a
-// triangle shared with coplanar partners, which soup triangles cover each local triangle.
+// split_triangle_of<M>(soup, graph, t), for a point model M (models/point_model.h): the
+// constrained triangulation of one soup triangle t by its intersection points and
+// constraint segments (and those of its coplanar partners), built by point insertion and
+// constraint insertion with edge flips (Sloan's algorithm). Returns a Piece: the local
+// triangles (graph point ids, or -1 - k for the k-th new TPI of this triangle, where two
+// constraints cross), the new TPIs, and for a triangle shared with coplanar partners,
+// which soup triangles cover each local triangle.
 // Exactness: every decision is orient2d on the model's points in a projection where t is
 // not degenerate (checked exactly): DoubleModel, tritri's filtered exact predicates on
 // offset implicit points (TPIs implicit, never rounded); ExactModel, Epeck's.

@@ -1,9 +1,10 @@
 // arrangements/src/support/auxiliary_point.h
 //
-// auxiliary_point(V, t) = auxiliary_point(a, b, c) of t's corners: an explicit point strictly off the plane of triangle t, with
-// finite coordinates, deterministic in t's coordinates. Coplanar edge-edge crossings are
-// LPIs whose plane is the other edge plus this point: that plane is transverse to the
-// triangles' common plane, so the LPI is well defined whenever the edges cross properly.
+// auxiliary_point(V, t) = auxiliary_point(a, b, c) of t's corners: an explicit point
+// strictly off the plane of triangle t, with finite coordinates, deterministic in t's
+// coordinates. Coplanar edge-edge crossings are LPIs whose plane is the other edge plus
+// this point: that plane is transverse to the triangles' common plane, so the LPI is well
+// defined whenever the edges cross properly.
 //
 // Construction: vertex a = V[t[0]] plus the rounded normal, if that is finite and off the
 // plane (exact orient3d); otherwise a moved along one coordinate axis k. The second way is
@@ -50,6 +51,8 @@ inline Vec3 auxiliary_point(const Vec3& a, const Vec3& b, const Vec3& c) {
   throw std::logic_error("auxiliary_point: degenerate triangle (collinear corners)");
 }
 
-inline Vec3 auxiliary_point(const std::vector<Vec3>& V, const Tri& t) { return auxiliary_point(V[t[0]], V[t[1]], V[t[2]]); }
+inline Vec3 auxiliary_point(const std::vector<Vec3>& V, const Tri& t) {
+  return auxiliary_point(V[t[0]], V[t[1]], V[t[2]]);
+}
 
 }  // namespace arrangements

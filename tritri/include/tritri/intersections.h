@@ -83,7 +83,8 @@ std::vector<IntersectingPair> intersections(const Eigen::MatrixBase<DerivedV1>& 
     return out;
   };
   std::vector<detail::MeshPoint> lo = joined(points1.lower(), points2.lower());
-  std::vector<detail::MeshPoint> hi = doubles ? std::vector<detail::MeshPoint>{} : joined(points1.upper(), points2.upper());
+  std::vector<detail::MeshPoint> hi =
+      doubles ? std::vector<detail::MeshPoint>{} : joined(points1.upper(), points2.upper());
   std::vector<detail::MeshTriangle> tris(tris1);
   const int offset = static_cast<int>(points1.size());
   for (detail::MeshTriangle t : tris2) tris.push_back({t[0] + offset, t[1] + offset, t[2] + offset});

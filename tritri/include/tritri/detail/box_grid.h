@@ -198,11 +198,13 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
   // Pairs on one level.
   for (const GridLevel& g : levels)
     if (g.first.back() > 1)
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, g.cells(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t c = r.begin(); c < r.end(); ++c)
-        for (std::uint32_t p = g.first[c]; p < g.first[c + 1]; ++p)
-          for (std::uint32_t q = p + 1; q < g.first[c + 1]; ++q) test(g, c, boxes[g.member[p]], boxes[g.member[q]]);
-    });
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, g.cells(), 256),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t c = r.begin(); c < r.end(); ++c)
+                            for (std::uint32_t p = g.first[c]; p < g.first[c + 1]; ++p)
+                              for (std::uint32_t q = p + 1; q < g.first[c + 1]; ++q)
+                                test(g, c, boxes[g.member[p]], boxes[g.member[q]]);
+                        });
   // Pairs across levels: each box against the boxes of every higher level in its cells there.
   if (top > 0)
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
