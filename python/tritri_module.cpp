@@ -314,6 +314,7 @@ nb::dict safely_rounded_dict(Out&& out, int threads, const arrangements::Triangl
   plain.stats.round_coarsened = report.coarsened;
   plain.stats.round_rerouted = report.rerouted;
   plain.stats.round_merged_input = report.merged_input;
+  plain.stats.round_snapped_vertices = report.snapped_vertices;
   std::vector<double> v(3 * rounded.vertices.size());
   for (std::size_t i = 0; i < rounded.vertices.size(); ++i)
     for (int c = 0; c < 3; ++c) v[3 * i + c] = rounded.vertices[i][c];

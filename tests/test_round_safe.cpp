@@ -29,6 +29,7 @@
 #include "arrangements/round_mesh.h"
 #include "round_merged_input.h"
 #include "round_per_vertex.h"
+#include "round_snapped_planes.h"
 #include "support/exact_soups.h"
 #include "support/loadable_meshes.h"
 #include "support/mesh_generators.h"
@@ -87,7 +88,8 @@ RoundReport expect_safe_rounding(const Mesh& exact, const std::string& name, boo
   // Provenance: (source, label set) pairs of the rounded mesh are those of the exact one;
   // on a coarser grid or with merged input vertices, layers merged into one carry the
   // union of their labels.
-  const bool layers_may_merge = report.grid > 0 || report.merged_input > 0 || report.reroute_cycles > 0;
+  const bool layers_may_merge =
+      report.grid > 0 || report.merged_input > 0 || report.reroute_cycles > 0 || report.snapped_vertices > 0;
   std::set<std::pair<std::int64_t, LabelSet>> exact_provenance;
   std::set<std::uint32_t> exact_labels;
   for (std::size_t t = 0; t < exact.triangles.size(); ++t) {
@@ -358,6 +360,78 @@ TEST(RoundSafe, RoundingPerVertexSettlesGrazingCopiesOnCoarserGridsAtTheConflict
   EXPECT_LE(per->max_move, std::ldexp(largest, -40));  // a few ulps: 2^-40 of the size is 2^12 ulps
   std::printf("rounding per vertex, two copies 10 x 19: %d rounds, %zu vertices coarsened, move %.3g\n", per->rounds,
               per->coarsened, per->max_move);
+}
+
+// `soup` turned by 2 pi / 3 about the diagonal direction (1, 1, 1) through `centre`, then moved
+// by `shift`, in doubles: a cube about its centre maps onto itself, its faces an ulp or so
+// off their planes.
+TriangleSoup turned_about_diagonal(TriangleSoup soup, const Vec3& centre, const Vec3& shift) {
+  const double c = std::cos(2 * M_PI / 3), s = std::sin(2 * M_PI / 3), k = 1 / std::sqrt(3.0), t = 1 - c;
+  const double R[3][3] = {{c + k * k * t, k * k * t - k * s, k * k * t + k * s},
+                          {k * k * t + k * s, c + k * k * t, k * k * t - k * s},
+                          {k * k * t - k * s, k * k * t + k * s, c + k * k * t}};
+  for (Vec3& v : soup.vertices) {
+    const Vec3 p{v[0] - centre[0], v[1] - centre[1], v[2] - centre[2]};
+    for (int i = 0; i < 3; ++i) v[i] = R[i][0] * p[0] + R[i][1] * p[1] + R[i][2] * p[2] + centre[i] + shift[i];
+  }
+  return soup;
+}
+
+// Three unit cubes, the second the first turned about its diagonal and moved along a face,
+// the third the second turned again about its own centre and moved: faces of different
+// cubes nearly coincide (within ulps, shifted in their planes) and share no vertex.
+TriangleSoup turned_cubes() {
+  const TriangleSoup a = box({0, 0, 0}, {1, 1, 1});
+  const TriangleSoup b = turned_about_diagonal(a, {0.5, 0.5, 0.5}, {0.3, 0.2, 0});
+  const TriangleSoup c = turned_about_diagonal(b, {0.8, 0.7, 0.5}, {0.1, 0.3, 0});
+  return concatenate(concatenate(a, b), c);
+}
+
+TEST(RoundSafe, NearlyCoplanarFacesOfTurnedCubesAreSnappedCoplanar) {
+  const TriangleSoup soup = turned_cubes();
+  const ArrangeResult first = arrange(soup, ArrangeOptions{});
+  ASSERT_GT(first.stats.intersecting_pairs, 0u);
+  ASSERT_EQ(first.stats.coplanar_pairs, 0u);  // nearly, not exactly, coplanar
+  // Without the input, no step settles the layers that cross wherever the errors change sign.
+  EXPECT_THROW(round_safe(first.mesh), RoundingError);
+  bool nearest_ok = true;
+  const RoundReport report = expect_safe_rounding(first.mesh, "turned cubes", nearest_ok, &soup);
+  EXPECT_FALSE(nearest_ok);
+  EXPECT_GT(report.snapped_vertices, 0u);
+  EXPECT_EQ(report.merged_input, 0u);
+  EXPECT_LE(report.max_move_relative, 1e-14);
+  std::printf("turned cubes: %d passes, %zu input vertices snapped, largest move / diagonal %.3g\n", report.passes,
+              report.snapped_vertices, report.max_move_relative);
+}
+
+TEST(RoundSafe, SnappingNearlyCoplanarFacesMakesThemExactlyCoplanar) {
+  const TriangleSoup soup = turned_cubes();
+  const double delta = std::ldexp(1.0, -52 + 2);  // 4 ulps of the largest magnitude (in [1, 2))
+  const SnappedPlanes snapped = snap_near_coplanar_faces(soup, delta, 0);
+  EXPECT_GT(snapped.groups, 0u);
+  EXPECT_GT(snapped.moved, 0u);
+  // The exact pipeline now finds coplanar overlapping layers where it found none.
+  const ExactArrangeResult again = arrange(snapped.soup, ArrangeOptions{});
+  EXPECT_GT(again.stats.coplanar_pairs, 0u);
+  // Each vertex stays within the reported move, which stays within 64 delta.
+  std::size_t moved = 0;
+  for (std::size_t v = 0; v < soup.vertices.size(); ++v) {
+    const ExactVec3 original = to_exact(soup.vertices[v]);
+    if (snapped.soup.vertices[v] == original) continue;
+    ++moved;
+    CGAL::Gmpq d2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const CGAL::Gmpq d = snapped.soup.vertices[v][k] - original[k];
+      d2 += d * d;
+    }
+    EXPECT_LE(d2, CGAL::Gmpq(snapped.max_move) * CGAL::Gmpq(snapped.max_move)) << v;
+  }
+  EXPECT_EQ(moved, snapped.moved);
+  EXPECT_LE(snapped.max_move, 64 * std::sqrt(3.0) * delta);
+  EXPECT_EQ(snapped.soup.triangles, soup.triangles);
+  EXPECT_EQ(snapped.soup.source, soup.source);
+  // A mesh without near-coplanar layers (one cube) is left as it is.
+  EXPECT_EQ(snap_near_coplanar_faces(box({0, 0, 0}, {1, 1, 1}), delta, 0).moved, 0u);
 }
 
 TEST(RoundSafe, MergingInputVerticesIsExactAndTransitive) {

@@ -17,6 +17,7 @@
 #include "arrangements/arrange.h"
 #include "arrangements/as_input.h"
 #include "round_merged_input.h"
+#include "round_snapped_planes.h"
 #include "round_per_vertex.h"
 #include "round_rerouting.h"
 #include "support/cell_grid.h"
@@ -167,6 +168,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   double move = 0;
   RoundReport r;
   std::size_t last_intersecting = 0;
+  ArrangeStats last{};  // what the latest pass's arrangement found
   const RoundedMesh nearest = round_mesh(mesh, 0, 0, move);
   const double largest = largest_magnitude(nearest.vertices);
   const double ulp = level_spacing(largest, 1) / 256;
@@ -196,6 +198,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       const bool worse = (pass > 1 && again.stats.intersecting_pairs >= last_intersecting) ||
                          again.stats.out_triangles > level_triangles + level_triangles / 10;
       last_intersecting = again.stats.intersecting_pairs;
+      last = again.stats;
       if (worse || r.passes >= options.max_passes) break;
       rounded = round_mesh(again.mesh, h, snap, move);
       level_move += move;
@@ -267,30 +270,52 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       cycle_move += move_now;
     }
   }
-  // Back to the input (round_merged_input.h), when given: its vertices within 4, 16, 64,
-  // then 256 ulps of each other merged, the merged input arranged and rounded safely (a
-  // move of a few ulps where copies of one mesh nearly coincide, before the coarser grids
-  // move every vertex by 2^8 ulps or more). A distance that merges no more vertices than
-  // the one before is not tried again.
+  // Back to the input, when given: a changed input (double or exact soup) arranged and
+  // rounded safely as here (without the input steps); `note` records the change in the
+  // report. The bound adds the input's largest move.
+  auto settle_input = [&](const auto& soup, double input_move, auto note) -> std::optional<RoundedMesh> {
+    RoundSafeOptions inner = options;
+    inner.input = nullptr;
+    inner.max_passes = options.max_passes - r.passes;
+    RoundReport done;
+    try {
+      RoundedMesh rounded = round_safe(arrange(soup, arrange_options).mesh, inner, &done);
+      done.passes += r.passes;
+      note(done);
+      r = done;
+      return finish(std::move(rounded), input_move + done.max_move, done.grid);
+    } catch (const RoundingError&) {
+      r.passes += done.passes;
+      return std::nullopt;
+    }
+  };
+  // Merged input (round_merged_input.h): its vertices within 4, 16, 64, then 256 ulps of each
+  // other merged (a move of a few ulps where copies of one mesh nearly coincide, before the
+  // coarser grids move every vertex by 2^8 ulps or more). A distance that merges no more
+  // vertices than the one before is not tried again.
   if (options.input != nullptr) {
     std::size_t merged_before = 0;
     for (int k = 1; k <= 4 && r.passes < options.max_passes; ++k) {
       const MergedInput merged = merge_close_input_vertices(*options.input, std::ldexp(ulp, 2 * k));
       if (merged.merged == merged_before) continue;
       merged_before = merged.merged;
-      RoundSafeOptions inner = options;
-      inner.input = nullptr;
-      inner.max_passes = options.max_passes - r.passes;
-      RoundReport done;
-      try {
-        RoundedMesh rounded = round_safe(arrange(merged.soup, arrange_options).mesh, inner, &done);
-        done.passes += r.passes;
-        done.merged_input = merged.merged;
-        r = done;
-        return finish(std::move(rounded), merged.max_move + done.max_move, done.grid);
-      } catch (const RoundingError&) {
-        r.passes += done.passes;
-      }
+      if (auto done =
+              settle_input(merged.soup, merged.max_move, [&](RoundReport& d) { d.merged_input = merged.merged; }))
+        return *done;
+    }
+  }
+  // Snapped planes (round_snapped_planes.h): layers within 4, 16, then 64 ulps of each other's
+  // planes made coplanar (exact rationals), for faces that nearly coincide without sharing
+  // vertices. A distance that moves no more vertices than the one before is not tried again.
+  if (options.input != nullptr) {
+    std::size_t moved_before = 0;
+    for (int k = 1; k <= 3 && r.passes < options.max_passes; ++k) {
+      const SnappedPlanes snapped = snap_near_coplanar_faces(*options.input, std::ldexp(ulp, 2 * k), options.threads);
+      if (snapped.moved == moved_before) continue;
+      moved_before = snapped.moved;
+      if (auto done = settle_input(snapped.soup, snapped.max_move,
+                                   [&](RoundReport& d) { d.snapped_vertices = snapped.moved; }))
+        return *done;
     }
   }
   for (int level = 1; level < kLevels && r.passes < options.max_passes; ++level)
@@ -319,14 +344,17 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     }
   }
   if (report) *report = r;
-  throw RoundingError("round_safe: the rounded mesh still has " + std::to_string(last_intersecting) +
-                      " intersecting pairs after the passes of rounding and arranging, and neither rerouting "
-                      "(it stops after 3 rounds without fewer violations) nor rounding per vertex (after two "
-                      "rounds without fewer conflicts, or at a grid of 2^32 ulps)" +
-                      std::string(options.input != nullptr ? " nor merging input vertices within 256 ulps" : "") +
-                      " settled it; " +
-                      std::to_string(r.passes) + " passes and rounds in all (at most " +
-                      std::to_string(options.max_passes) + ")");
+  throw RoundingError(
+      "round_safe: the rounded mesh is still not an arrangement (the last pass of rounding and arranging found " +
+      std::to_string(last.intersecting_pairs) + " intersecting pairs, merged " + std::to_string(last.merged_vertices) +
+      " vertices, removed " + std::to_string(last.removed_degenerate + last.removed_duplicate) +
+      " degenerate or duplicate triangles), and neither rerouting (it stops after 3 rounds without fewer "
+      "violations) nor rounding per vertex (after two rounds without fewer conflicts, or at a grid of 2^32 ulps)" +
+      std::string(options.input != nullptr
+                      ? " nor merging input vertices within 256 ulps nor snapping nearly coplanar faces"
+                      : "") +
+      " settled it; " + std::to_string(r.passes) + " passes and rounds in all (at most " +
+      std::to_string(options.max_passes) + ")");
 }
 
 }  // namespace

@@ -184,6 +184,7 @@ int main(int argc, char** argv) {
             s.round_coarsened = report.coarsened;
             s.round_rerouted = report.rerouted;
             s.round_merged_input = report.merged_input;
+            s.round_snapped_vertices = report.snapped_vertices;
             add_write_time(s, seconds_since(tr));
           }
           if (output) {

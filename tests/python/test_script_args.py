@@ -2,7 +2,7 @@
 error (exit status 2 and a message naming the option), never a traceback or a hang.
 
 Table-driven over run_collection.py, report.py, compare_upstream.py, python_vs_cli.py,
-stage_table.py, polygon_bench.py and pipeline_bench.py: empty values, signs, spaces,
+stage_table.py, polygon_bench.py, pipeline_bench.py and round_safe_sweep.py: empty values, signs, spaces,
 prefixes, fractions, NaN/Inf, numbers beyond every range (2^31 - 1, 2^63, 10^30), missing values, an option given twice, unknown
 options. Most cases call the scripts' main(argv) in this process (argparse's SystemExit
 carries the exit status); a sample runs them as processes. The shared rules and the thread
@@ -22,6 +22,7 @@ import pipeline_bench
 import polygon_bench
 import python_vs_cli
 import report
+import round_safe_sweep
 import run_collection
 import stage_table
 from conftest import BENCH, REPO, make_meshes
@@ -52,6 +53,8 @@ def setup(tmp_path):
         "stage_table": (stage_table.main, ["--arrange", str(tool), str(meshes / "a.off")]),
         "polygon_bench": (polygon_bench.main, ["--arrange", str(tool)]),
         "pipeline_bench": (pipeline_bench.main, ["--arrange", str(tool), "--meshes", str(reference)]),
+        "round_safe_sweep": (round_safe_sweep.main, [str(meshes), "--out", str(tmp_path / "s.jsonl"),
+                                                     "--arrange", str(tool)]),
     }
 
 
@@ -98,6 +101,15 @@ OPTIONS = [
     ("pipeline_bench", "--work", [""], "w"),
     ("pipeline_bench", "--json", [""], "j.jsonl"),
     ("pipeline_bench", "--reference-omc", [""], "p.md"),  # its value is optional
+    ("round_safe_sweep", "--out", [""], "x.jsonl"),
+    ("round_safe_sweep", "--arrange", ["", "/nonexistent/arrange"], "a"),
+    ("round_safe_sweep", "--variants", ["", ",", "rot2,", ",rot2", "rot2,,shift", "rot2,rot2", "ROT2", "rot4",
+                                        "rot2 shift", "rot2;shift", "all"], "rot2"),
+    ("round_safe_sweep", "--max-triangles", BAD_INTEGERS + ["0", "1000000001"], "1"),
+    ("round_safe_sweep", "--seed", BAD_INTEGERS + ["1000000001"], "1"),
+    ("round_safe_sweep", "--threads", BAD_INTEGERS + [str(cli_args.MAX_THREADS + 1)], "1"),
+    ("round_safe_sweep", "--timeout", BAD_SECONDS, "1"),
+    ("round_safe_sweep", "--work", [""], "w"),
 ]
 OPTIONAL_VALUE = {("pipeline_bench", "--reference-omc")}
 
@@ -112,9 +124,10 @@ def hostile_cases():
             yield pytest.param(script, lambda base, o=option, v=valid: base + [o, v, o, v], option,
                                id=f"{script}{option}-twice")
     for script in ("run_collection", "report", "compare_upstream", "python_vs_cli", "stage_table", "polygon_bench",
-                   "pipeline_bench"):
+                   "pipeline_bench", "round_safe_sweep"):
         for i, opt in enumerate(["--bogus", "-x", "--threads=", "---"]):
-            if script in ("compare_upstream", "python_vs_cli", "stage_table", "pipeline_bench") and opt == "--threads=":
+            if script in ("compare_upstream", "python_vs_cli", "stage_table", "pipeline_bench",
+                          "round_safe_sweep") and opt == "--threads=":
                 continue  # covered above as an empty value
             yield pytest.param(script, lambda base, o=opt: base + [o], None, id=f"{script}-unknown-{i}")
     # Empty positional arguments.
@@ -122,6 +135,12 @@ def hostile_cases():
     yield pytest.param("report", lambda base: [""] + base[1:], "results", id="report-empty-results")
     yield pytest.param("python_vs_cli", lambda base: [""] + base[1:], "meshes", id="python_vs_cli-empty-meshes")
     yield pytest.param("stage_table", lambda base: base[:-1] + [""], "meshes", id="stage_table-empty-mesh")
+    yield pytest.param("round_safe_sweep", lambda base: [""] + base[1:], "INPUT", id="round_safe_sweep-empty-input")
+    yield pytest.param("round_safe_sweep", lambda base: ["/nonexistent/mesh.off"] + base[1:], "input",
+                       id="round_safe_sweep-missing-input")
+    yield pytest.param("round_safe_sweep", lambda base: [str(Path(base[0]).parent / "results.jsonl")] + base[1:],
+                       "input", id="round_safe_sweep-not-a-mesh")
+    yield pytest.param("round_safe_sweep", lambda base: base[3:], "--out", id="round_safe_sweep-no-out")
     yield pytest.param("run_collection", lambda base: base[1:], None, id="run_collection-no-input")
     yield pytest.param("report", lambda base: base[:1], "--out", id="report-no-out")
 
@@ -184,6 +203,9 @@ def test_run_time_problems_are_messages_not_tracebacks(setup, tmp_path, capsys):
     ["pipeline_bench.py", "--arrange", "/nonexistent/arrange"],
     ["pipeline_bench.py", "--threads", "1,1", "--runs", "1"],
     ["pipeline_bench.py", "--runs", "1", "--runs", "1"],
+    ["round_safe_sweep.py", "--out", "o.jsonl", "--arrange", "/nonexistent/arrange"],
+    ["round_safe_sweep.py", "--out", "o.jsonl", "--variants", "rot4"],
+    ["round_safe_sweep.py", "--out", "o.jsonl", "--max-triangles", "-5"],
 ])
 def test_as_processes_exit_two_without_a_traceback(tmp_path, args):
     p = subprocess.run([sys.executable, str(BENCH / args[0]), *args[1:]], capture_output=True, text=True,
@@ -208,13 +230,13 @@ def test_the_thread_cap_is_the_cxx_one():
 
 def test_help_names_the_limits(capsys):
     for main in (run_collection.main, compare_upstream.main, python_vs_cli.main, stage_table.main, polygon_bench.main,
-                 pipeline_bench.main):
+                 pipeline_bench.main, round_safe_sweep.main):
         with pytest.raises(SystemExit) as e:
             main(["--help"])
         assert e.value.code == 0
     out = capsys.readouterr().out
-    assert out.count(f"0 (all cores) to {cli_args.MAX_THREADS}") == 4
-    assert "models run at once, 1 to 1024" in out and out.count("given once") == 6
+    assert out.count(f"0 (all cores) to {cli_args.MAX_THREADS}") == 5
+    assert "models run at once, 1 to 1024" in out and out.count("given once") == 7
 
 
 def test_pipeline_bench_limits_missing_inputs_and_run_time_problems(tmp_path, capsys):

@@ -54,6 +54,7 @@ struct ArrangeStats {
   std::size_t round_coarsened = 0;
   std::size_t round_rerouted = 0;
   std::size_t round_merged_input = 0;
+  std::size_t round_snapped_vertices = 0;
 };
 
 // One row of the table.
@@ -127,7 +128,10 @@ inline constexpr auto kArrangeStats = std::make_tuple(
                "nearest double (0 unless the passes failed)"),
     stat_entry("round_merged_input", &ArrangeStats::round_merged_input, 0,
                "--round safe: input vertices its last resort merged into another within 256 ulps, the "
-               "merged input arranged again (0 unless every other way failed)"));
+               "merged input arranged again (0 unless every other way failed)"),
+    stat_entry("round_snapped_vertices", &ArrangeStats::round_snapped_vertices, 0,
+               "--round safe: input vertices its last resort moved onto the plane of a nearly coplanar layer "
+               "(exactly), the input arranged again (0 unless every other way failed)"));
 
 // The keys and meanings alone, in order.
 struct StatKey {

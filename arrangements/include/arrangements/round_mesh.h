@@ -72,6 +72,15 @@
 //   other, instances) then coincide exactly, each shared face once with the union of the
 //   labels, instead of crossing wherever the rounding errors change sign. The bound adds
 //   the largest distance a vertex moved to its cluster's representative.
+//   Snapping nearly coplanar faces (src/round_snapped_planes.h), when merging input
+//   vertices fails: triangles of the input whose corners lie within 4 ulps of L of each
+//   other's planes (then 16, 64), grouped where two layers overlap, are moved exactly onto
+//   one plane per group (a vertex of two or three groups onto their line or point, as
+//   rationals), and the snapped input is arranged (exact path) and rounded safely as here.
+//   Parts turned by angles that map them onto themselves (an ulp off) and moved along a
+//   face then have exactly coplanar faces, each shared region once with the union of the
+//   labels, instead of layers crossing wherever the errors change sign. The bound adds the
+//   largest snap.
 //   Termination: the passes have no proof (3D snap rounding with a proven bound needs a
 //   grid far coarser than doubles): at most kLevels x 4 = 20 of them. Rerouting stops
 //   after 3 rounds without fewer violations, its cycles after 8. Rounding per vertex terminates by
@@ -80,13 +89,14 @@
 //   or when options.max_passes (passes and rounds together) is reached. What is
 //   measured (tests/test_round_safe.cpp: every shared mesh with intersections, MCUT and
 //   EMBER pairs, rotated copies) is given in the tests' output.
-//   Known failures (RoundingError): surfaces that nearly coincide over whole faces with
-//   vertices that are not near each other (three copies of a sphere with 21 meridians or
-//   more rotated by 2 pi / 3 about its box centre, crossing at grazing angles; without
-//   options.input, also copies whose vertices coincide to 1e-16): at every level the
-//   rounded layers cross again in as many places, their conflicts are not within an ulp
-//   of a feature, and coarsening them only spreads them. The exact output (--exact) is
-//   always available.
+//   Known failures (RoundingError): surfaces that cross at grazing angles over whole faces
+//   with many conflicts (three copies of a sphere with 21 meridians or more rotated by
+//   2 pi / 3 about its box centre, whose seams meet in clusters of triple points near the
+//   poles; a copy moved by 1e-9 of the size and turned by 1e-7 rad: bench/round_safe_sweep.py
+//   measures how often); without options.input, also copies whose vertices coincide to
+//   1e-16 and nearly coplanar faces. At every level the rounded layers cross again in as
+//   many places, their conflicts are not within an ulp of a feature, and coarsening them
+//   only spreads them. The exact output (--exact) is always available.
 //   Provenance is kept: a triangle of the result lies in (the rounded image of) the input
 //   triangle `source` names, with the union of labels of every input triangle covering it;
 //   triangles that collapsed to a segment or a point are gone (they had no area).
@@ -128,6 +138,8 @@ struct RoundReport {
                                     // (0 when the passes succeeded)
   std::size_t merged_input = 0;     // input vertices merged into another one (the last
                                     // resort that needs options.input)
+  std::size_t snapped_vertices = 0;  // input vertices moved onto the plane of a nearly
+                                     // coplanar layer (needs options.input too)
   int reroute_cycles = 0;           // rerouted meshes arranged again (coplanar layers
                                     // then merge, one source for their area)
 };
