@@ -434,6 +434,57 @@ TEST(RoundSafe, SnappingNearlyCoplanarFacesMakesThemExactlyCoplanar) {
   EXPECT_EQ(snap_near_coplanar_faces(box({0, 0, 0}, {1, 1, 1}), delta, 0).moved, 0u);
 }
 
+TEST(RoundSafe, ACopyMovedBy1e9AndTurnedBy1e7SettlesOnTheCoarsestGrid) {
+  // QuickCSG's t1_48 and a copy turned by 1e-7 rad about its box centre and moved by 1e-9 of
+  // its diagonal (bench/round_safe_sweep.py's "shift" variant, seed 1): layers crossing at
+  // grazing angles everywhere. Only the coarsest grid, 2^32 ulps, puts the copies on one
+  // grid; its 4th pass still drops duplicate triangles without finding an intersection,
+  // and the 5th settles (a pass that finds none makes no new point).
+  const fs::path file = tritri_test::shared_meshes_dir() / "thingicsg" / "QuickCSG" / "T1" / "t1_48.off";
+  TRITRI_REQUIRE_DATA(file);
+  TriangleSoup mesh = load_triangle_soup(file.string());
+  mesh.polygon.clear();  // concatenate keeps no polygon ids
+  const Vec3 axis{0.045609566428869625, 0.46022821167165107, 0.8866283103035254};
+  const Vec3 direction{0.03177729554885592, 0.989647738007784, 0.13995555774486879};
+  const double diagonal = 330.09472127857964, angle = 1e-7;
+  Vec3 lo = mesh.vertices[0], hi = mesh.vertices[0];
+  for (const Vec3& v : mesh.vertices)
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], v[k]);
+      hi[k] = std::max(hi[k], v[k]);
+    }
+  const double c = std::cos(angle), s = std::sin(angle), t = 1.0 - c;
+  const double x = axis[0], y = axis[1], z = axis[2];
+  const double R[3][3] = {{c + x * x * t, x * y * t - z * s, x * z * t + y * s},
+                          {y * x * t + z * s, c + y * y * t, y * z * t - x * s},
+                          {z * x * t - y * s, z * y * t + x * s, c + z * z * t}};
+  TriangleSoup copy = mesh;
+  for (Vec3& v : copy.vertices) {
+    const Vec3 d{v[0] - (lo[0] + hi[0]) / 2, v[1] - (lo[1] + hi[1]) / 2, v[2] - (lo[2] + hi[2]) / 2};
+    for (int i = 0; i < 3; ++i)
+      v[i] = (lo[i] + hi[i]) / 2 + R[i][0] * d[0] + R[i][1] * d[1] + R[i][2] * d[2] + 1e-9 * diagonal * direction[i];
+  }
+  const TriangleSoup soup = concatenate(mesh, copy);
+  const ArrangeResult first = arrange(soup, ArrangeOptions{});
+  ASSERT_GT(first.stats.intersecting_pairs, 0u);
+  // expect_safe_rounding's area and move limits are for finer grids: on 2^32 ulps a source may
+  // gain area (by about the grid's size over its length) and the passes' moves add up.
+  RoundReport report;
+  const RoundedMesh r = round_safe(first.mesh, RoundSafeOptions{.input = &soup}, &report);
+  EXPECT_TRUE(check_arrangement(r).ok());
+  const ArrangeStats again = arrange(arrangements::as_input(r), ArrangeOptions{}).stats;
+  EXPECT_EQ(again.intersecting_pairs + again.tpi + again.merged_vertices + again.removed_degenerate +
+                again.removed_duplicate,
+            0u);
+  EXPECT_EQ(again.out_triangles, r.triangles.size());
+  EXPECT_GT(report.grid, 0.0);
+  EXPECT_LE(report.max_move_relative, 1e-5);
+  for (std::size_t i = 0; i < r.triangles.size(); ++i)
+    ASSERT_LT(r.source[i], static_cast<std::int64_t>(soup.triangles.size()));
+  std::printf("t1_48 and its shifted copy: %d passes, grid %.3g, largest move / diagonal %.3g\n", report.passes,
+              report.grid, report.max_move_relative);
+}
+
 TEST(RoundSafe, MergingInputVerticesIsExactAndTransitive) {
   // delta = 2^-40: every coordinate below is a double, every distance known exactly.
   const double d = std::ldexp(1.0, -40);

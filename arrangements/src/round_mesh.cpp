@@ -188,18 +188,21 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     RoundedMesh rounded = level == 0 ? nearest : round_mesh(mesh, h, snap, move);
     double level_move = move;
     const std::size_t level_triangles = rounded.triangles.size();
-    for (int pass = 1; pass <= kPassesPerLevel; ++pass) {
+    for (int pass = 1;; ++pass) {
       ++r.passes;
       ArrangeResult again = arrange(as_input(rounded), arrange_options);
       if (unchanged(again.stats)) return finish(std::move(rounded), level_move, h);
       // A pass that does not reduce the intersections, or grows the mesh by more than a
       // tenth, means this grid keeps making features it cannot hold: go to the next level
-      // (before the passes grow the mesh without bound).
-      const bool worse = (pass > 1 && again.stats.intersecting_pairs >= last_intersecting) ||
+      // (before the passes grow the mesh without bound). A pass that finds none, only
+      // vertices to merge or triangles to drop (copies collapsed onto one grid), makes no
+      // new point and shrinks the mesh: the next one may settle, even after the level's 4.
+      const bool no_new_points = again.stats.intersecting_pairs == 0;
+      const bool worse = (pass > 1 && !no_new_points && again.stats.intersecting_pairs >= last_intersecting) ||
                          again.stats.out_triangles > level_triangles + level_triangles / 10;
       last_intersecting = again.stats.intersecting_pairs;
       last = again.stats;
-      if (worse || r.passes >= options.max_passes) break;
+      if (worse || r.passes >= options.max_passes || (pass >= kPassesPerLevel && !no_new_points)) break;
       rounded = round_mesh(again.mesh, h, snap, move);
       level_move += move;
     }

@@ -26,7 +26,9 @@
 //   coordinate magnitude L). Some meshes hold features far thinner than an ulp (slivers,
 //   two surfaces 1e-33 apart near a zero coordinate); passes at level 0 then keep making
 //   new points at that scale. When a pass does not reduce the intersecting pairs, grows the
-//   mesh by more than a tenth, or 4 passes did not succeed, rerouting is tried (below: it
+//   mesh by more than a tenth, or 4 passes did not succeed (a pass that finds no
+//   intersecting pair, only vertices to merge or triangles to drop, makes no new point and
+//   shrinks the mesh: passes go on after it, past the 4th), rerouting is tried (below: it
 //   moves the surface by an ulp per round at most), then merging input vertices (below), then the
 //   next level starts again
 //   from the exact arrangement, on the uniform grid of spacing h = 2^(8j) ulps of L
