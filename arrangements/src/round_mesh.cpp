@@ -167,7 +167,6 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   arrange_options.threads = options.threads;
   double move = 0;
   RoundReport r;
-  std::size_t last_intersecting = 0;
   ArrangeStats last{};  // what the latest pass's arrangement found
   const RoundedMesh nearest = round_mesh(mesh, 0, 0, move);
   const double largest = largest_magnitude(nearest.vertices);
@@ -198,9 +197,8 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       // vertices to merge or triangles to drop (copies collapsed onto one grid), makes no
       // new point and shrinks the mesh: the next one may settle, even after the level's 4.
       const bool no_new_points = again.stats.intersecting_pairs == 0;
-      const bool worse = (pass > 1 && !no_new_points && again.stats.intersecting_pairs >= last_intersecting) ||
+      const bool worse = (pass > 1 && !no_new_points && again.stats.intersecting_pairs >= last.intersecting_pairs) ||
                          again.stats.out_triangles > level_triangles + level_triangles / 10;
-      last_intersecting = again.stats.intersecting_pairs;
       last = again.stats;
       if (worse || r.passes >= options.max_passes || (pass >= kPassesPerLevel && !no_new_points)) break;
       rounded = round_mesh(again.mesh, h, snap, move);
@@ -323,7 +321,6 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   }
   for (int level = 1; level < kLevels && r.passes < options.max_passes; ++level)
     if (auto done = passes_at_level(level)) return *done;
-
   if (r.passes < options.max_passes) {
     // Rounding per vertex from the arrangement's triangles, then from the rerouted ones
     // (within an ulp per round of rerouting of the rounded ones: extra_move).

@@ -37,24 +37,30 @@ QVec cross(const QVec& a, const QVec& b) {
 }
 Q dot(const QVec& a, const QVec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-// Whether p lies within delta of the plane of (a, b, c), a proper triangle: an interval
-// filter, then exact rationals when the intervals cannot tell.
-bool within_plane(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p, double delta) {
+using I = CGAL::Interval_nt<false>;
+using IVec = std::array<I, 3>;
+
+// The normal (b - a) x (c - a) of a triangle, in intervals (rounding set upwards by the caller).
+IVec interval_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const IVec u{I(b[0]) - a[0], I(b[1]) - a[1], I(b[2]) - a[2]};
+  const IVec v{I(c[0]) - a[0], I(c[1]) - a[1], I(c[2]) - a[2]};
+  return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
+
+// Whether p lies within delta of the plane of (a, b, c), a proper triangle with interval
+// normal n: an interval filter, then exact rationals when the intervals cannot tell.
+bool within_plane(const Vec3& a, const Vec3& b, const Vec3& c, const IVec& n, const Vec3& p, double delta) {
   {
-    using I = CGAL::Interval_nt<false>;
     CGAL::Protect_FPU_rounding<true> rounding_up;
-    const std::array<I, 3> u{I(b[0]) - a[0], I(b[1]) - a[1], I(b[2]) - a[2]};
-    const std::array<I, 3> v{I(c[0]) - a[0], I(c[1]) - a[1], I(c[2]) - a[2]};
-    const std::array<I, 3> n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
     const I h = n[0] * (I(p[0]) - a[0]) + n[1] * (I(p[1]) - a[1]) + n[2] * (I(p[2]) - a[2]);
     const I bound = I(delta) * delta * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     const CGAL::Uncertain<bool> near = CGAL::square(h) <= bound;
     if (CGAL::is_certain(near)) return CGAL::get_certain(near);
   }
   const QVec qa = to_exact(a);
-  const QVec n = cross(minus(to_exact(b), qa), minus(to_exact(c), qa));
-  const Q h = dot(n, minus(to_exact(p), qa));
-  return h * h <= Q(delta) * Q(delta) * dot(n, n);
+  const QVec qn = cross(minus(to_exact(b), qa), minus(to_exact(c), qa));
+  const Q h = dot(qn, minus(to_exact(p), qa));
+  return h * h <= Q(delta) * Q(delta) * dot(qn, qn);
 }
 
 struct Plane {
@@ -109,9 +115,20 @@ SnappedPlanes snap_near_coplanar_faces(const TriangleSoup& input, double delta, 
       hi[v][k] = std::nextafter(V[v][k] + delta, std::numeric_limits<double>::infinity());
     }
   const std::vector<std::pair<int, int>> pairs = tritri::overlapping_triangle_pairs(lo, hi, F, threads);
-  // A triangle is proper when its exact normal is not zero.
+  // Each triangle's interval normal, computed once for all its tests; a triangle is proper
+  // when its exact normal is not zero (decided by the intervals when they exclude zero).
+  std::vector<IVec> normal(F.size());
   std::vector<char> is_proper(F.size());
   tbb::parallel_for(0, nf, [&](int t) {
+    {
+      CGAL::Protect_FPU_rounding<true> rounding_up;
+      normal[t] = interval_normal(V[F[t][0]], V[F[t][1]], V[F[t][2]]);
+    }
+    const IVec& m = normal[t];
+    if (!m[0].do_overlap(0) || !m[1].do_overlap(0) || !m[2].do_overlap(0)) {
+      is_proper[t] = 1;
+      return;
+    }
     const QVec a = to_exact(V[F[t][0]]);
     const QVec n = cross(minus(to_exact(V[F[t][1]]), a), minus(to_exact(V[F[t][2]]), a));
     is_proper[t] = n[0] != 0 || n[1] != 0 || n[2] != 0;
@@ -123,8 +140,8 @@ SnappedPlanes snap_near_coplanar_faces(const TriangleSoup& input, double delta, 
     if (!is_proper[s] || !is_proper[t]) return;
     const Tri &a = F[s], &b = F[t];
     for (int k = 0; k < 3; ++k)
-      if (!within_plane(V[a[0]], V[a[1]], V[a[2]], V[b[k]], delta) ||
-          !within_plane(V[b[0]], V[b[1]], V[b[2]], V[a[k]], delta))
+      if (!within_plane(V[a[0]], V[a[1]], V[a[2]], normal[s], V[b[k]], delta) ||
+          !within_plane(V[b[0]], V[b[1]], V[b[2]], normal[t], V[a[k]], delta))
         return;
     bool shared = false;
     for (int j = 0; j < 3; ++j)

@@ -56,7 +56,7 @@ void SoupBuilder::other_coordinate(long line, const std::string& what, int axis,
     refuse_at_line(
         InputErrorKind::non_finite_coordinate, path_, line,
         what + quoted(token) + " is beyond the largest finite double (the pipeline needs finite bounding boxes)");
-  if (!beyond_double_range(q) && exact_double(q, value)) {
+  if (exact_double(q, value)) {  // false beyond the double range
     if (value == 0 && token.front() == '-') value = -0.0;  // as the decimal "-0" reads
     return;
   }
