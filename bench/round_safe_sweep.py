@@ -36,7 +36,8 @@ Output: --out gets one JSON object per run: mesh (id: path relative to its folde
 manifest), variant, file (the variant OFF), in_triangles (of the variant), status,
 exit_code, message (the first stderr line when not settled), wall_s (the process), and
 round_passes, round_max_move_rel, round_rerouted, round_coarsened, round_merged_input,
-round_snapped_vertices, out_triangles, t_total_s, peak_rss_mb (null when arrange printed no --stats). Rows go to
+round_snapped_vertices, out_triangles (of the exact arrangement), t_total_s, peak_rss_mb (null when
+arrange printed no --stats), and rounded_triangles (faces of the written mesh; null unless settled). Rows go to
 RESULTS.jsonl.partial as runs finish (flushed), renamed to RESULTS.jsonl when the sweep is
 done; an interrupted sweep leaves the .partial file. Progress on stderr. On stdout, a
 Markdown summary per variant: counts per status; median and max of round_passes,
@@ -69,7 +70,7 @@ MESH_SUFFIXES = (".obj", ".off", ".stl", ".ply")
 VARIANTS = ("rot2", "rot3", "shift", "scaled")
 STATUSES = ("settled", "refused", "timeout", "error")
 STAT_KEYS = ("round_passes", "round_max_move_rel", "round_rerouted", "round_coarsened", "round_merged_input",
-             "round_snapped_vertices", "out_triangles", "t_total_s", "peak_rss_mb")
+             "round_snapped_vertices", "out_triangles", "t_total_s", "peak_rss_mb", "rounded_triangles")
 REFUSED_EXIT = 4
 SCALE, OFFSET = 2.0 ** -30, 1e6
 SHIFT_ANGLE, SHIFT_DISTANCE = 1e-7, 1e-9
@@ -204,6 +205,15 @@ def first_line(stderr):
     return next((line.strip() for line in stderr.splitlines() if line.strip()), "")
 
 
+def count_faces(obj):
+    """The faces of a written OBJ file (its 'f' lines), or None when it cannot be read."""
+    try:
+        with open(obj, encoding="ascii", errors="replace") as f:
+            return sum(1 for line in f if line.startswith("f "))
+    except OSError:
+        return None
+
+
 def run_arrange(binary, file, out, threads, timeout):
     """(status, exit code, message, stats or None, wall seconds) of one arrange process."""
     cmd = ["sh", "-c", '"$@"; exit $?', "sh", str(binary), str(file), "-o", str(out), "--round", "safe",
@@ -229,6 +239,7 @@ def run_arrange(binary, file, out, threads, timeout):
     wall = time.monotonic() - start
     stats = parse_tool_json(stdout)
     if p.returncode == 0 and stats is not None:
+        stats["rounded_triangles"] = count_faces(out)
         return "settled", 0, None, stats, wall
     if p.returncode == REFUSED_EXIT:
         return "refused", p.returncode, first_line(stderr), stats, wall

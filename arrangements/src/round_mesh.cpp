@@ -40,6 +40,8 @@ Vec3 double_coordinates(const ExactVec3&) { return {}; }  // never asked
 constexpr int kLevels = 5;
 constexpr int kPassesPerLevel = 4;
 constexpr int kRerouteCycles = 8;
+constexpr int kReroutePasses = 64;  // passes and rounds of round_safe when its rerouting stops
+constexpr int kInputBudget = 32;  // passes and rounds of round_safe on each changed input
 
 double level_spacing(double largest, int level) { return level == 0 ? 0 : grid_spacing(largest, 8 * level); }
 
@@ -171,10 +173,15 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   const RoundedMesh nearest = round_mesh(mesh, 0, 0, move);
   const double largest = largest_magnitude(nearest.vertices);
   const double ulp = level_spacing(largest, 1) / 256;
-  auto finish = [&](RoundedMesh rounded, double max_move, double grid) {
+  // A result that moves a vertex by more than a 64th of the arrangement's diagonal is not
+  // a rounding of it (a grid or merge distance as wide as the model collapses it, to
+  // nothing at worst): every step's result is refused beyond that, and the next step tried.
+  // A model only a few ulps wide may move by 16 ulps (rounding to nearest moves it by one).
+  const double diagonal = bounding_box_diagonal(nearest.vertices), move_limit = std::max(diagonal / 64, 16 * ulp);
+  auto finish = [&](RoundedMesh rounded, double max_move, double grid) -> std::optional<RoundedMesh> {
+    if (max_move > move_limit) return std::nullopt;
     r.grid = grid;
     r.max_move = max_move;
-    const double diagonal = bounding_box_diagonal(rounded.vertices);
     r.max_move_relative = diagonal > 0 ? r.max_move / diagonal : 0.0;
     if (report) *report = r;
     return rounded;
@@ -225,7 +232,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       nearest_positions[v] = tritri::to_double(exact[v]);
     }
   });
-  auto settled = [&](RoundedMesh rounded, double max_move, double grid) {
+  auto settled = [&](RoundedMesh rounded, double max_move, double grid) -> std::optional<RoundedMesh> {
     if (!unchanged(arrange(as_input(rounded), arrange_options).stats))
       throw RoundingError("round_safe: a last resort passed the check but arranging its result changed it");
     return finish(std::move(rounded), max_move, grid);
@@ -240,10 +247,12 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     RoundedMesh cycle_mesh{nearest_positions, mesh.triangles, mesh.source, mesh.label_set, mesh.label_sets};
     double cycle_move = largest_distance(exact, nearest_positions);
     std::size_t rerouted = 0;
-    for (int cycle = 0; cycle < kRerouteCycles && r.passes < options.max_passes; ++cycle) {
+    // Rerouting stops at kReroutePasses, leaving the rest of the budget to the steps below.
+    const int reroute_limit = std::min(options.max_passes, kReroutePasses);
+    for (int cycle = 0; cycle < kRerouteCycles && r.passes < reroute_limit; ++cycle) {
       const RoundedMesh& c = cycle_mesh;
       Rerouting now = reroute_conflicts(c.vertices, c.triangles, c.source, c.label_set, c.label_sets, ulp,
-                                        options.max_passes - r.passes);
+                                        reroute_limit - r.passes);
       r.passes += now.rounds;
       rerouted += now.rerouted;
       // Each round of rerouting moves the surface by an ulp at most (a vertex put on an
@@ -254,7 +263,9 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       if (cycle == 0) rerouting = std::move(now);
       if (violations == 0) {
         r.rerouted = rerouted;
-        return settled(std::move(best), cycle_move, 0.0);
+        if (auto done = settled(std::move(best), cycle_move, 0.0)) return *done;
+        r.rerouted = 0;
+        break;
       }
       // Arranging again pays only for few conflicts: where they are many (layers that
       // nearly coincide over whole faces, for the input merge and the coarser grids) it
@@ -262,7 +273,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       // itself the same way.
       const std::size_t triangles = best.triangles.size();
       if (violations > triangles / 20 ||
-          triangles > mesh.triangles.size() + mesh.triangles.size() / 10 || r.passes >= options.max_passes)
+          triangles > mesh.triangles.size() + mesh.triangles.size() / 10 || r.passes >= reroute_limit)
         break;
       ++r.passes;
       ++r.reroute_cycles;
@@ -272,16 +283,21 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     }
   }
   // Back to the input, when given: a changed input (double or exact soup) arranged and
-  // rounded safely as here (without the input steps); `note` records the change in the
+  // rounded safely as here (without the input steps), within kInputBudget passes (a change
+  // that does not settle soon is not the right one); `note` records the change in the
   // report. The bound adds the input's largest move.
   auto settle_input = [&](const auto& soup, double input_move, auto note) -> std::optional<RoundedMesh> {
     RoundSafeOptions inner = options;
     inner.input = nullptr;
-    inner.max_passes = options.max_passes - r.passes;
+    inner.max_passes = std::min(kInputBudget, options.max_passes - r.passes);
     RoundReport done;
     try {
       RoundedMesh rounded = round_safe(arrange(soup, arrange_options).mesh, inner, &done);
       done.passes += r.passes;
+      if (input_move + done.max_move > move_limit) {
+        r.passes = done.passes;
+        return std::nullopt;
+      }
       note(done);
       r = done;
       return finish(std::move(rounded), input_move + done.max_move, done.grid);
@@ -290,37 +306,56 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       return std::nullopt;
     }
   };
+  // One input step: the input changed within 4^k ulps for k = first..last (`change`, whose
+  // result counts the vertices it moved in `count`) and settled as above. A distance that
+  // moves no more vertices than the last one tried (`moved_before`) is not tried again; with
+  // `stable`, neither is one where 4 times the distance would move more than a 16th more
+  // vertices (a scale inside the clusters, not between them: copies not all caught yet).
+  auto input_step = [&](int first, int last, bool stable, std::size_t& moved_before, auto change,
+                        auto count, std::size_t RoundReport::*reported) -> std::optional<RoundedMesh> {
+    if (options.input == nullptr) return std::nullopt;
+    std::optional<decltype(change(ulp))> ahead;  // the change at 4 times the distance, when made
+    for (int k = first; k <= last && r.passes < options.max_passes; ++k) {
+      const auto changed = ahead ? std::move(*ahead) : change(std::ldexp(ulp, 2 * k));
+      ahead.reset();
+      if (changed.*count == moved_before) continue;
+      if (stable) {
+        ahead = change(std::ldexp(ulp, 2 * k + 2));
+        if ((*ahead).*count > changed.*count + changed.*count / 16) continue;
+      }
+      moved_before = changed.*count;
+      auto note = [&](RoundReport& d) { d.*reported = changed.*count; };
+      if (auto done = settle_input(changed.soup, changed.max_move, note)) return done;
+    }
+    return std::nullopt;
+  };
+  auto merge_within = [&](double delta) { return merge_close_input_vertices(*options.input, delta); };
   // Merged input (round_merged_input.h): its vertices within 4, 16, 64, then 256 ulps of each
   // other merged (a move of a few ulps where copies of one mesh nearly coincide, before the
-  // coarser grids move every vertex by 2^8 ulps or more). A distance that merges no more
-  // vertices than the one before is not tried again.
-  if (options.input != nullptr) {
-    std::size_t merged_before = 0;
-    for (int k = 1; k <= 4 && r.passes < options.max_passes; ++k) {
-      const MergedInput merged = merge_close_input_vertices(*options.input, std::ldexp(ulp, 2 * k));
-      if (merged.merged == merged_before) continue;
-      merged_before = merged.merged;
-      if (auto done =
-              settle_input(merged.soup, merged.max_move, [&](RoundReport& d) { d.merged_input = merged.merged; }))
-        return *done;
-    }
-  }
+  // coarser grids move every vertex by 2^8 ulps or more).
+  std::size_t merged_before = 0, snapped_before = 0;
+  if (auto done = input_step(1, 4, false, merged_before, merge_within, &MergedInput::merged,
+                             &RoundReport::merged_input))
+    return *done;
   // Snapped planes (round_snapped_planes.h): layers within 4, 16, then 64 ulps of each other's
   // planes made coplanar (exact rationals), for faces that nearly coincide without sharing
-  // vertices. A distance that moves no more vertices than the one before is not tried again.
-  if (options.input != nullptr) {
-    std::size_t moved_before = 0;
-    for (int k = 1; k <= 3 && r.passes < options.max_passes; ++k) {
-      const SnappedPlanes snapped = snap_near_coplanar_faces(*options.input, std::ldexp(ulp, 2 * k), options.threads);
-      if (snapped.moved == moved_before) continue;
-      moved_before = snapped.moved;
-      if (auto done = settle_input(snapped.soup, snapped.max_move,
-                                   [&](RoundReport& d) { d.snapped_vertices = snapped.moved; }))
+  // vertices.
+  auto snap_within = [&](double delta) { return snap_near_coplanar_faces(*options.input, delta, options.threads); };
+  if (auto done = input_step(1, 3, false, snapped_before, snap_within, &SnappedPlanes::moved,
+                             &RoundReport::snapped_vertices))
+    return *done;
+  // The coarser levels, each after merging the input within its spacing: copies of one mesh
+  // moved and turned by far more than ulps (1e-9 of the size, 1e-7 rad) coincide once every
+  // copied vertex merges with its original, a smaller change than moving every vertex to the
+  // level's grid. Merges that catch some copies only leave layers crossing as before, so
+  // these distances are `stable` ones.
+  for (int level = 1; level < kLevels && r.passes < options.max_passes; ++level) {
+    if (level > 1)
+      if (auto done = input_step(4 * level - 3, 4 * level, true, merged_before, merge_within,
+                                 &MergedInput::merged, &RoundReport::merged_input))
         return *done;
-    }
-  }
-  for (int level = 1; level < kLevels && r.passes < options.max_passes; ++level)
     if (auto done = passes_at_level(level)) return *done;
+  }
   if (r.passes < options.max_passes) {
     // Rounding per vertex from the arrangement's triangles, then from the rerouted ones
     // (within an ulp per round of rerouting of the rounded ones: extra_move).
@@ -351,9 +386,10 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       " degenerate or duplicate triangles), and neither rerouting (it stops after 3 rounds without fewer "
       "violations) nor rounding per vertex (after two rounds without fewer conflicts, or at a grid of 2^32 ulps)" +
       std::string(options.input != nullptr
-                      ? " nor merging input vertices within 256 ulps nor snapping nearly coplanar faces"
+                      ? " nor merging input vertices (within 4 to 2^32 ulps) nor snapping nearly coplanar faces"
                       : "") +
-      " settled it; " + std::to_string(r.passes) + " passes and rounds in all (at most " +
+      " settled it within a move of a 64th of the diagonal (or 16 ulps); " + std::to_string(r.passes) +
+      " passes and rounds in all (at most " +
       std::to_string(options.max_passes) + ")");
 }
 

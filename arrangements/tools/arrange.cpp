@@ -63,10 +63,12 @@ options:
                           rerouted through vertices within an ulp (in cycles of
                           re-arranging while few conflicts are left), then input
                           vertices a few ulps apart merged and the input arranged
-                          again, then coarser grids, then every vertex rounded on its
-                          own, to coarser grids only at the conflicts;
-                          provenance kept; exit status 4 if nothing settles within 64
-                          passes. Stats round_*
+                          again, nearly coplanar faces snapped onto one plane, then
+                          coarser grids (each after merging input vertices within its
+                          spacing), then every vertex rounded on its own, to coarser
+                          grids only at the conflicts; no vertex moves by more than a
+                          64th of the model's diagonal; provenance kept; exit status 4
+                          if nothing settles within 256 passes. Stats round_*
   --check                 verify the arrangement exactly: every pair of triangles with
                           overlapping boxes meets only in shared vertices and edges
                           (tritri on the implicit points; with --round safe, on the rounded

@@ -15,8 +15,7 @@ from conftest import REPO
 ARRANGE = Path(os.environ.get("TRITRI_ARRANGE_BIN", str(REPO / "build" / "bin" / "arrange")))
 KEYS = {"mesh", "variant", "file", "in_triangles", "status", "exit_code", "message", "wall_s", "round_passes",
         "round_max_move_rel", "round_rerouted", "round_coarsened", "round_merged_input", "round_snapped_vertices",
-        "out_triangles",
-        "t_total_s", "peak_rss_mb"}
+        "out_triangles", "t_total_s", "peak_rss_mb", "rounded_triangles"}
 TETRAHEDRON = ([(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.1, 0.2, 1.0)],
                [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)])
 OCTAHEDRON = ([(1.5, 0.0, 0.0), (-1.0, 0.0, 0.0), (0.0, 1.25, 0.0), (0.0, -1.0, 0.0), (0.0, 0.0, 1.0),
@@ -66,6 +65,9 @@ def test_rows_and_variant_files(tmp_path, capsys):
         if r["status"] == "settled":
             assert r["exit_code"] == 0 and r["message"] is None
             assert r["round_passes"] >= 1 and r["out_triangles"] > 0 and r["round_max_move_rel"] >= 0, r
+            assert r["rounded_triangles"] > 0, r
+        else:
+            assert r["rounded_triangles"] is None, r
         V0, F0 = inputs[r["mesh"]]
         V, F = read_off(Path(r["file"]))
         assert len(F) == 2 * len(F0) == r["in_triangles"]

@@ -127,7 +127,7 @@ inline constexpr auto kArrangeStats = std::make_tuple(
                "--round safe: vertices its last resort put on a nearby edge or face, each staying at its "
                "nearest double (0 unless the passes failed)"),
     stat_entry("round_merged_input", &ArrangeStats::round_merged_input, 0,
-               "--round safe: input vertices its last resort merged into another within 256 ulps, the "
+               "--round safe: input vertices its last resort merged into another (within 4 to 2^32 ulps), the "
                "merged input arranged again (0 unless every other way failed)"),
     stat_entry("round_snapped_vertices", &ArrangeStats::round_snapped_vertices, 0,
                "--round safe: input vertices its last resort moved onto the plane of a nearly coplanar layer "

@@ -38,7 +38,10 @@
 //   Displacement: the points of a pass move by at most the snap distance or the rounding
 //   from a point of the previous pass's surface; report->max_move sums the largest move
 //   of each pass of the successful level (bounded from exact coordinate differences), so
-//   every vertex of the result lies within it of the exact arrangement's surface.
+//   every vertex of the result lies within it of the exact arrangement's surface. No
+//   result moves a vertex by more than a 64th of the exact arrangement's diagonal (or 16
+//   ulps of L, for models a few ulps wide): a step whose result would is refused and the
+//   next one tried, so a grid or merge distance as wide as the model never collapses it.
 //   Last resorts; rounding per vertex and the rounds of rerouting do not arrange again, so
 //   they make no new points (rerouting's cycles do, few):
 //   Rerouting (src/round_rerouting.h), when level 0 fails: every vertex stays at its
@@ -83,6 +86,14 @@
 //   face then have exactly coplanar faces, each shared region once with the union of the
 //   labels, instead of layers crossing wherever the errors change sign. The bound adds the
 //   largest snap.
+//   Merging input vertices at coarser distances, before each coarser level j = 2..4:
+//   within 2^(8j-6) .. 2^(8j) ulps (4^k ulps, k = 4j-3 .. 4j), a distance tried only
+//   where 4 times it would merge at most a 16th more vertices (a scale between clusters:
+//   every copied vertex caught, not some). A copy moved by 1e-9 of the size and turned by
+//   1e-7 rad crosses its original at grazing angles everywhere, and no grid holds those
+//   crossings; merged within about 1e-7 of the size (2^28 to 2^32 ulps), it coincides with
+//   its original, a smaller change than moving every vertex to that level's grid. Each
+//   changed input (every input step) gets 32 passes, rerouting at most 64 in all.
 //   Termination: the passes have no proof (3D snap rounding with a proven bound needs a
 //   grid far coarser than doubles): at most kLevels x 4 = 20 of them. Rerouting stops
 //   after 3 rounds without fewer violations, its cycles after 8. Rounding per vertex terminates by
@@ -90,15 +101,15 @@
 //   after two rounds without fewer violations, at a vertex needing more than 2^32 ulps,
 //   or when options.max_passes (passes and rounds together) is reached. What is
 //   measured (tests/test_round_safe.cpp: every shared mesh with intersections, MCUT and
-//   EMBER pairs, rotated copies) is given in the tests' output.
+//   EMBER pairs, rotated copies; tests/test_round_safe_input.cpp: the input steps) is given
+//   in the tests' output.
 //   Known failures (RoundingError): surfaces that cross at grazing angles over whole faces
 //   with many conflicts (three copies of a sphere with 21 meridians or more rotated by
 //   2 pi / 3 about its box centre, whose seams meet in clusters of triple points near the
-//   poles; a copy moved by 1e-9 of the size and turned by 1e-7 rad: bench/round_safe_sweep.py
-//   measures how often); without options.input, also copies whose vertices coincide to
-//   1e-16 and nearly coplanar faces. At every level the rounded layers cross again in as
-//   many places, their conflicts are not within an ulp of a feature, and coarsening them
-//   only spreads them. The exact output (--exact) is always available.
+//   poles: bench/round_safe_sweep.py measures how often); without options.input, also
+//   copies whose vertices coincide to 1e-16 or 1e-7, and nearly coplanar faces. At every
+//   level the rounded layers cross again in as many places, their conflicts are not within
+//   an ulp of a feature, and coarsening them only spreads them. The exact output (--exact) is always available.
 //   Provenance is kept: a triangle of the result lies in (the rounded image of) the input
 //   triangle `source` names, with the union of labels of every input triangle covering it;
 //   triangles that collapsed to a segment or a point are gone (they had no area).
@@ -121,17 +132,18 @@
 namespace arrangements {
 
 struct RoundSafeOptions {
-  int max_passes = 64;  // passes of rounding and arranging, then rounds of the last resort
+  int max_passes = 256;  // passes of rounding and arranging, then rounds of the last resorts
   int threads = 0;  // worker threads of the pipeline runs: 0 for all cores
   // The input that `mesh` is the arrangement of (double path only; optional): enables the
-  // last resort of merging input vertices that lie within a few ulps of each other.
+  // input steps (merging input vertices, snapping nearly coplanar faces).
   const TriangleSoup* input = nullptr;
 };
 
 struct RoundReport {
   int passes = 0;                   // roundings done (1: rounding to nearest was enough)
   double max_move = 0;              // the displacement bound above (model units)
-  double max_move_relative = 0;     // max_move / the diagonal of the result's bounding box
+  double max_move_relative = 0;     // max_move / the diagonal of the exact arrangement's
+                                    // bounding box (never above 1/64, unless 16 ulps are more)
   double grid = 0;                  // 0: rounded to nearest doubles (level 0); else the
                                     // spacing of the uniform grid of the level that succeeded
                                     // (the last resort: of the coarsest grid it used)

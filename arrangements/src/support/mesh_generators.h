@@ -10,6 +10,8 @@
 //                   with exactly representable (dyadic) coordinates
 //   rotated_copies  k copies of a soup rotated about the z axis through its bounding-box
 //                   centre by 2*pi*i/k (a workload whose intersections grow with k^2)
+//   turned          a soup turned by an angle about a unit axis through a centre, then
+//                   moved (Rodrigues' rotation matrix, in doubles)
 //   concatenate     the union of two soups (labels: first 0, second 1)
 //
 // All return a TriangleSoup with one label set {0} (concatenate: {0} and {1}) and
@@ -24,6 +26,7 @@ TriangleSoup uv_sphere(const Vec3& centre, double radius, int rings, int segment
 TriangleSoup box(const Vec3& lo, const Vec3& hi);
 TriangleSoup grid(int n, double cell, double z0, double x0 = 0, double y0 = 0);
 TriangleSoup rotated_copies(const TriangleSoup& soup, int k);
+TriangleSoup turned(TriangleSoup soup, const Vec3& centre, const Vec3& axis, double angle, const Vec3& shift);
 TriangleSoup concatenate(const TriangleSoup& a, const TriangleSoup& b);
 
 }  // namespace arrangements
