@@ -176,10 +176,11 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   // A result that moves a vertex by more than a 64th of the arrangement's diagonal is not
   // a rounding of it (a grid or merge distance as wide as the model collapses it, to
   // nothing at worst): every step's result is refused beyond that, and the next step tried.
-  // A model only a few ulps wide may move by 16 ulps (rounding to nearest moves it by one).
+  // A model only a few ulps wide may move by 16 ulps (rounding to nearest moves it by one),
+  // but not vanish.
   const double diagonal = bounding_box_diagonal(nearest.vertices), move_limit = std::max(diagonal / 64, 16 * ulp);
   auto finish = [&](RoundedMesh rounded, double max_move, double grid) -> std::optional<RoundedMesh> {
-    if (max_move > move_limit) return std::nullopt;
+    if (max_move > move_limit || (rounded.triangles.empty() && !mesh.triangles.empty())) return std::nullopt;
     r.grid = grid;
     r.max_move = max_move;
     r.max_move_relative = diagonal > 0 ? r.max_move / diagonal : 0.0;

@@ -40,8 +40,9 @@
 //   of each pass of the successful level (bounded from exact coordinate differences), so
 //   every vertex of the result lies within it of the exact arrangement's surface. No
 //   result moves a vertex by more than a 64th of the exact arrangement's diagonal (or 16
-//   ulps of L, for models a few ulps wide): a step whose result would is refused and the
-//   next one tried, so a grid or merge distance as wide as the model never collapses it.
+//   ulps of L, for models a few ulps wide), and no result of a mesh with triangles is
+//   empty: a step whose result would is refused and the next one tried, so a grid or merge
+//   distance as wide as the model never collapses it.
 //   Last resorts; rounding per vertex and the rounds of rerouting do not arrange again, so
 //   they make no new points (rerouting's cycles do, few):
 //   Rerouting (src/round_rerouting.h), when level 0 fails: every vertex stays at its
