@@ -345,18 +345,10 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   if (auto done = input_step(1, 3, false, snapped_before, snap_within, &SnappedPlanes::moved,
                              &RoundReport::snapped_vertices))
     return *done;
-  // The coarser levels, each after merging the input within its spacing: copies of one mesh
-  // moved and turned by far more than ulps (1e-9 of the size, 1e-7 rad) coincide once every
-  // copied vertex merges with its original, a smaller change than moving every vertex to the
-  // level's grid. Merges that catch some copies only leave layers crossing as before, so
-  // these distances are `stable` ones.
-  for (int level = 1; level < kLevels && r.passes < options.max_passes; ++level) {
-    if (level > 1)
-      if (auto done = input_step(4 * level - 3, 4 * level, true, merged_before, merge_within,
-                                 &MergedInput::merged, &RoundReport::merged_input))
-        return *done;
-    if (auto done = passes_at_level(level)) return *done;
-  }
+  // Level 1 (a grid of 2^8 ulps), then rounding per vertex, which moves only the vertices of
+  // conflicting triangles (a far smaller change, where it settles, than the levels below).
+  if (r.passes < options.max_passes)
+    if (auto done = passes_at_level(1)) return *done;
   if (r.passes < options.max_passes) {
     // Rounding per vertex from the arrangement's triangles, then from the rerouted ones
     // (within an ulp per round of rerouting of the rounded ones: extra_move).
@@ -368,7 +360,9 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       if (!per) return std::nullopt;
       r.passes += per->rounds;
       r.coarsened = per->coarsened;
-      return settled(per->mesh, per->max_move + extra_move, per->grid);
+      if (auto done = settled(per->mesh, per->max_move + extra_move, per->grid)) return done;
+      r.coarsened = 0;
+      return std::nullopt;
     };
     if (auto done = per_vertex(mesh.triangles, mesh.source, mesh.label_set, mesh.label_sets, 0.0)) return *done;
     if (rerouting.rerouted > 0) {
@@ -378,6 +372,17 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
         return *done;
       r.rerouted = 0;
     }
+  }
+  // The coarser levels, each after merging the input within its spacing: copies of one mesh
+  // moved and turned by far more than ulps (1e-9 of the size, 1e-7 rad) coincide once every
+  // copied vertex merges with its original, a smaller change than moving every vertex to the
+  // level's grid. Merges that catch some copies only leave layers crossing as before, so
+  // these distances are `stable` ones.
+  for (int level = 2; level < kLevels && r.passes < options.max_passes; ++level) {
+    if (auto done = input_step(4 * level - 3, 4 * level, true, merged_before, merge_within, &MergedInput::merged,
+                               &RoundReport::merged_input))
+      return *done;
+    if (auto done = passes_at_level(level)) return *done;
   }
   if (report) *report = r;
   throw RoundingError(

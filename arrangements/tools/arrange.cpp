@@ -64,11 +64,12 @@ options:
                           re-arranging while few conflicts are left), then input
                           vertices a few ulps apart merged and the input arranged
                           again, nearly coplanar faces snapped onto one plane, then
-                          coarser grids (each after merging input vertices within its
-                          spacing), then every vertex rounded on its own, to coarser
-                          grids only at the conflicts; no vertex moves by more than a
-                          64th of the model's diagonal; provenance kept; exit status 4
-                          if nothing settles within 256 passes. Stats round_*
+                          a grid of 2^8 ulps, then every vertex rounded on its own, to
+                          coarser grids only at the conflicts, then coarser grids (each
+                          after merging input vertices within its spacing); no vertex
+                          moves by more than a 64th of the model's diagonal; provenance
+                          kept; exit status 4 if nothing settles within 256 passes.
+                          Stats round_*
   --check                 verify the arrangement exactly: every pair of triangles with
                           overlapping boxes meets only in shared vertices and edges
                           (tritri on the implicit points; with --round safe, on the rounded

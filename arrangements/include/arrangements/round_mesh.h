@@ -57,7 +57,8 @@
 //   grows by a tenth); each cycle adds its rounding move and an ulp per round to the bound. Layers
 //   crossing at grazing angles with few conflicts settle this way (three copies of a
 //   10 x 19 sphere rotated about its box centre: 7 cycles, 1.4e-15 of the diagonal).
-//   Rounding per vertex (src/round_per_vertex.h), when the levels fail too, from the
+//   Rounding per vertex (src/round_per_vertex.h), when level 1 fails too (before levels
+//   2-4: it moves only the vertices of conflicting triangles), from the
 //   arrangement's triangles, then from the rerouted ones. Every vertex of the exact
 //   arrangement goes to the nearest double; each round checks the rounded mesh exactly
 //   (check_arrangement) and moves the vertices of every violating pair, and only those,
