@@ -295,13 +295,13 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     try {
       RoundedMesh rounded = round_safe(arrange(soup, arrange_options).mesh, inner, &done);
       done.passes += r.passes;
-      if (input_move + done.max_move > move_limit) {
-        r.passes = done.passes;
-        return std::nullopt;
-      }
       note(done);
+      const RoundReport before = r;
       r = done;
-      return finish(std::move(rounded), input_move + done.max_move, done.grid);
+      if (auto result = finish(std::move(rounded), input_move + done.max_move, done.grid)) return result;
+      r = before;  // refused by the move limit: nothing of it stays in the report but its passes
+      r.passes = done.passes;
+      return std::nullopt;
     } catch (const RoundingError&) {
       r.passes += done.passes;
       return std::nullopt;
