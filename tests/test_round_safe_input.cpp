@@ -114,7 +114,7 @@ TEST(RoundSafeInput, NearlyCoplanarFacesOfTurnedCubesAreSnappedCoplanar) {
 TEST(RoundSafeInput, SnappingNearlyCoplanarFacesMakesThemExactlyCoplanar) {
   const TriangleSoup soup = turned_cubes();
   const double delta = std::ldexp(1.0, -52 + 2);  // 4 ulps of the largest magnitude (in [1, 2))
-  const SnappedPlanes snapped = snap_near_coplanar_faces(soup, delta, 0);
+  const SnappedPlanes snapped = snap_near_coplanar_faces(soup, delta, 0, false);
   EXPECT_GT(snapped.groups, 0u);
   EXPECT_GT(snapped.moved, 0u);
   // The exact pipeline now finds coplanar overlapping layers where it found none.
@@ -138,7 +138,7 @@ TEST(RoundSafeInput, SnappingNearlyCoplanarFacesMakesThemExactlyCoplanar) {
   EXPECT_EQ(snapped.soup.triangles, soup.triangles);
   EXPECT_EQ(snapped.soup.source, soup.source);
   // A mesh without near-coplanar layers (one cube) is left as it is.
-  EXPECT_EQ(snap_near_coplanar_faces(box({0, 0, 0}, {1, 1, 1}), delta, 0).moved, 0u);
+  EXPECT_EQ(snap_near_coplanar_faces(box({0, 0, 0}, {1, 1, 1}), delta, 0, false).moved, 0u);
 }
 
 // `soup` and a copy turned by 1e-7 rad about `axis` through its box centre and moved by 1e-9

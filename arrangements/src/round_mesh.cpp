@@ -341,8 +341,18 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   // Snapped planes (round_snapped_planes.h): layers within 4, 16, then 64 ulps of each other's
   // planes made coplanar (exact rationals), for faces that nearly coincide without sharing
   // vertices.
-  auto snap_within = [&](double delta) { return snap_near_coplanar_faces(*options.input, delta, options.threads); };
+  auto snap_within = [&](double delta) {
+    return snap_near_coplanar_faces(*options.input, delta, options.threads, false);
+  };
   if (auto done = input_step(1, 3, false, snapped_before, snap_within, &SnappedPlanes::moved,
+                             &RoundReport::snapped_vertices))
+    return *done;
+  // Then contacts as well: corners within 4, 16, then 64 ulps of the plane of a triangle
+  // they touch moved onto it (an edge on a face that a turn left 1e-17 off it).
+  auto snap_contacts_within = [&](double delta) {
+    return snap_near_coplanar_faces(*options.input, delta, options.threads, true);
+  };
+  if (auto done = input_step(1, 3, false, snapped_before, snap_contacts_within, &SnappedPlanes::moved,
                              &RoundReport::snapped_vertices))
     return *done;
   // Level 1 (a grid of 2^8 ulps), then rounding per vertex, which moves only the vertices of

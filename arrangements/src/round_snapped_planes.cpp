@@ -99,7 +99,7 @@ std::optional<QVec> onto_planes(const std::vector<const Plane*>& planes, const Q
 
 }  // namespace
 
-SnappedPlanes snap_near_coplanar_faces(const TriangleSoup& input, double delta, int threads) {
+SnappedPlanes snap_near_coplanar_faces(const TriangleSoup& input, double delta, int threads, bool contacts) {
   const std::vector<Vec3>& V = input.vertices;
   const std::vector<Tri>& F = input.triangles;
   const int nf = static_cast<int>(F.size());
@@ -135,18 +135,48 @@ SnappedPlanes snap_near_coplanar_faces(const TriangleSoup& input, double delta, 
   });
   // 0: no link; 1: near-coplanar neighbours (a shared corner); 2: near-coplanar layers.
   std::vector<char> link(pairs.size(), 0);
+  // With contacts: bit k (k < 3) when corner k of the first triangle touches the second's
+  // plane, bit 3 + k when corner k of the second touches the first's.
+  std::vector<unsigned char> touch(pairs.size(), 0);
+  auto in_box = [&](const Tri& t, const Vec3& p) {
+    for (int k = 0; k < 3; ++k) {
+      const double l = std::min({lo[t[0]][k], lo[t[1]][k], lo[t[2]][k]});
+      const double h = std::max({hi[t[0]][k], hi[t[1]][k], hi[t[2]][k]});
+      if (p[k] < l || p[k] > h) return false;
+    }
+    return true;
+  };
   tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t i) {
     const auto [s, t] = pairs[i];
     if (!is_proper[s] || !is_proper[t]) return;
     const Tri &a = F[s], &b = F[t];
-    for (int k = 0; k < 3; ++k)
-      if (!within_plane(V[a[0]], V[a[1]], V[a[2]], normal[s], V[b[k]], delta) ||
-          !within_plane(V[b[0]], V[b[1]], V[b[2]], normal[t], V[a[k]], delta))
-        return;
-    bool shared = false;
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) shared = shared || a[j] == b[k];
-    link[i] = shared ? 1 : 2;
+    // near[0][k]: corner k of a within delta of b's plane; near[1][k]: of b, of a's plane.
+    std::array<std::array<bool, 3>, 2> near{};
+    bool all = true;
+    for (int k = 0; k < 3 && (all || contacts); ++k) {
+      near[0][k] = within_plane(V[b[0]], V[b[1]], V[b[2]], normal[t], V[a[k]], delta);
+      near[1][k] = within_plane(V[a[0]], V[a[1]], V[a[2]], normal[s], V[b[k]], delta);
+      all = all && near[0][k] && near[1][k];
+    }
+    if (all) {
+      bool shared = false;
+      for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k) shared = shared || a[j] == b[k];
+      link[i] = shared ? 1 : 2;
+      return;
+    }
+    if (!contacts) return;
+    // A corner touches the other triangle when it lies within delta of its plane and either
+    // inside its box or on an edge whose other end lies within delta of the plane too.
+    for (int side = 0; side < 2; ++side) {
+      const Tri &mine = side == 0 ? a : b, &other = side == 0 ? b : a;
+      const int near_corners = near[side][0] + near[side][1] + near[side][2];
+      for (int k = 0; k < 3; ++k) {
+        const int v = mine[k];
+        if (!near[side][k] || v == other[0] || v == other[1] || v == other[2]) continue;
+        if (near_corners >= 2 || in_box(other, V[v])) touch[i] |= static_cast<unsigned char>(1u << (3 * side + k));
+      }
+    }
   });
   std::vector<int> parent(F.size());
   std::iota(parent.begin(), parent.end(), 0);
@@ -155,9 +185,14 @@ SnappedPlanes snap_near_coplanar_faces(const TriangleSoup& input, double delta, 
       const int r = find(parent, pairs[i].first), s = find(parent, pairs[i].second);
       if (r != s) parent[std::max(r, s)] = std::min(r, s);
     }
-  std::vector<char> layered(F.size(), 0);  // per group root: holds a link between layers
-  for (std::size_t i = 0; i < pairs.size(); ++i)
+  // Per group root: holds a link between layers, or is touched by a corner of another
+  // triangle; such groups are made flat.
+  std::vector<char> layered(F.size(), 0);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
     if (link[i] == 2) layered[find(parent, pairs[i].first)] = 1;
+    if (touch[i] & 7u) layered[find(parent, pairs[i].second)] = 1;
+    if (touch[i] >> 3) layered[find(parent, pairs[i].first)] = 1;
+  }
 
   // Each layered group's plane: that of its largest triangle (by the double norm of its
   // normal; ties to the smaller index). Any member's plane would do: they all lie within delta.
@@ -186,14 +221,20 @@ SnappedPlanes snap_near_coplanar_faces(const TriangleSoup& input, double delta, 
   out.groups = planes.size();
   // The planes of each vertex's groups, then its move onto them.
   std::vector<std::vector<int>> vertex_planes(V.size());
-  for (int t = 0; t < nf; ++t) {
-    const int r = find(parent, t);
-    if (plane_of[r] < 0) continue;
-    for (int v : F[t]) {
-      std::vector<int>& list = vertex_planes[v];
-      if (std::find(list.begin(), list.end(), plane_of[r]) == list.end()) list.push_back(plane_of[r]);
-    }
-  }
+  auto add_plane = [&](int v, int t) {
+    const int p = plane_of[find(parent, t)];
+    std::vector<int>& list = vertex_planes[v];
+    if (p >= 0 && std::find(list.begin(), list.end(), p) == list.end()) list.push_back(p);
+  };
+  for (int t = 0; t < nf; ++t)
+    for (int v : F[t]) add_plane(v, t);
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    for (int k = 0; k < 6; ++k)
+      if (touch[i] >> k & 1u) {
+        const auto [s, t] = pairs[i];
+        if (k < 3) add_plane(F[s][k], t);
+        else add_plane(F[t][k - 3], s);
+      }
   const Q limit = Q(64 * delta) * Q(64 * delta);
   for (std::size_t v = 0; v < V.size(); ++v) {
     const std::vector<int>& list = vertex_planes[v];
