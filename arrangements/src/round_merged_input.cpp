@@ -54,9 +54,10 @@ MergedInput merge_close_input_vertices(const TriangleSoup& input, double delta) 
   std::vector<int> representative(nv);
   for (std::size_t v = 0; v < nv; ++v) {
     representative[v] = find(parent, static_cast<int>(v));
-    if (representative[v] == static_cast<int>(v)) continue;
-    ++out.merged;
     const Vec3& p = input.vertices[v];
+    // Exact duplicates merge too (as arranging does) but move nothing: not counted.
+    if (representative[v] == static_cast<int>(v) || p == input.vertices[representative[v]]) continue;
+    ++out.merged;
     out.max_move = std::max(out.max_move, distance_bound({CGAL::Gmpq(p[0]), CGAL::Gmpq(p[1]), CGAL::Gmpq(p[2])},
                                                          input.vertices[representative[v]]));
   }

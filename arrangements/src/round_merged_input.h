@@ -18,7 +18,7 @@ struct MergedInput {
   TriangleSoup soup;        // the input with merged vertices, triangles with repeated
                             // corners dropped (provenance of the others unchanged; no
                             // polygon ids: merging may fold a polygon's triangles)
-  std::size_t merged = 0;   // input vertices replaced by another one
+  std::size_t merged = 0;   // input vertices replaced by another one at another position
   double max_move = 0;      // an upper bound of the largest distance a vertex moved
 };
 
