@@ -64,6 +64,7 @@ options:
                           re-arranging while few conflicts are left), then input
                           vertices a few ulps apart merged and the input arranged
                           again, nearly coplanar faces snapped onto one plane, then
+                          corners within a few ulps of a face they touch too, then
                           a grid of 2^8 ulps, then every vertex rounded on its own, to
                           coarser grids only at the conflicts, then coarser grids (each
                           after merging input vertices within its spacing); no vertex

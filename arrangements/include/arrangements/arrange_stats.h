@@ -131,7 +131,7 @@ inline constexpr auto kArrangeStats = std::make_tuple(
                "merged input arranged again (0 unless every other way failed)"),
     stat_entry("round_snapped_vertices", &ArrangeStats::round_snapped_vertices, 0,
                "--round safe: input vertices its last resort moved onto the plane of a nearly coplanar layer "
-               "(exactly), the input arranged again (0 unless every other way failed)"));
+               "or of a face they touch (exactly), the input arranged again (0 unless every other way failed)"));
 
 // The keys and meanings alone, in order.
 struct StatKey {

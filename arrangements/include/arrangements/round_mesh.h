@@ -87,7 +87,9 @@
 //   Parts turned by angles that map them onto themselves (an ulp off) and moved along a
 //   face then have exactly coplanar faces, each shared region once with the union of the
 //   labels, instead of layers crossing wherever the errors change sign. The bound adds the
-//   largest snap.
+//   largest snap. Then the same with contacts (4, 16, 64 ulps): a corner within that
+//   distance of the plane of a triangle it touches moves onto it (an edge that lay on a
+//   face, 1e-17 off it once turned, which cuts slivers 1e-17 wide along the whole edge).
 //   Merging input vertices at coarser distances, before each coarser level j = 2..4:
 //   within 2^(8j-6) .. 2^(8j) ulps (4^k ulps, k = 4j-3 .. 4j), a distance tried only
 //   where 4 times it would merge at most a 16th more vertices (a scale between clusters:
@@ -155,7 +157,8 @@ struct RoundReport {
   std::size_t merged_input = 0;     // input vertices merged into another one (the last
                                     // resort that needs options.input)
   std::size_t snapped_vertices = 0;  // input vertices moved onto the plane of a nearly
-                                     // coplanar layer (needs options.input too)
+                                     // coplanar layer or of a face they touch (needs
+                                     // options.input too)
   int reroute_cycles = 0;           // rerouted meshes arranged again (coplanar layers
                                     // then merge, one source for their area)
 };
