@@ -47,6 +47,7 @@
 #include "arrangements/check_arrangement.h"
 #include "arrangements/load_triangle_soup.h"
 #include "support/arrangement_scenes.h"
+#include "support/bounding_box.h"
 #include "support/exact_soups.h"
 #include "support/shared_meshes.h"
 #include "support/temp_dir.h"
@@ -245,19 +246,10 @@ struct Frame {
   double extent = 0;
 };
 Frame frame(const std::vector<const TriangleSoup*>& soups) {
-  Vec3 lo = soups.front()->vertices.front(), hi = lo;
+  BoundingBox box;
   for (const TriangleSoup* s : soups)
-    for (const Vec3& v : s->vertices)
-      for (int k = 0; k < 3; ++k) {
-        lo[k] = std::min(lo[k], v[k]);
-        hi[k] = std::max(hi[k], v[k]);
-      }
-  Frame f;
-  for (int k = 0; k < 3; ++k) {
-    f.centre[k] = 0.5 * (lo[k] + hi[k]);
-    f.extent = std::max(f.extent, hi[k] - lo[k]);
-  }
-  return f;
+    for (const Vec3& v : s->vertices) box.add(v);
+  return Frame{box.centre(), box.extent()};
 }
 
 // s rotated about `centre` by Rx(5/13, 12/13) Rz(3/5, 4/5), then moved by (d/70, d/110, d/130).

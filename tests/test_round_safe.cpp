@@ -28,6 +28,7 @@
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/round_mesh.h"
 #include "round_per_vertex.h"
+#include "support/bounding_box.h"
 #include "support/exact_soups.h"
 #include "support/loadable_meshes.h"
 #include "support/mesh_generators.h"
@@ -287,18 +288,9 @@ TEST(RoundSafe, NoResultMovesAVertexBeyondAFractionOfTheModel) {
       for (double& c : v) c = std::ldexp(c, -k) + 1e6;
     const ArrangeResult a = arrange(soup, ArrangeOptions{});
     const double ulp = std::ldexp(1.0, -52 + 19);  // of 1e6, in [2^19, 2^20)
-    double diagonal = 0;
-    {
-      Vec3 lo = a.mesh.vertices.empty() ? Vec3{} : tritri::to_double(a.mesh.vertices[0]), hi = lo;
-      for (const auto& p : a.mesh.vertices) {
-        const Vec3 q = tritri::to_double(p);
-        for (int i = 0; i < 3; ++i) {
-          lo[i] = std::min(lo[i], q[i]);
-          hi[i] = std::max(hi[i], q[i]);
-        }
-      }
-      diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
-    }
+    BoundingBox box;
+    for (const auto& p : a.mesh.vertices) box.add(tritri::to_double(p));
+    const double diagonal = box.diagonal();
     RoundReport report;
     try {
       const RoundedMesh r = round_safe(a.mesh, RoundSafeOptions{.input = &soup}, &report);

@@ -24,6 +24,7 @@
 #include "arrangements/as_input.h"
 #include "arrangements/round_mesh.h"
 #include "round_snapped_planes.h"
+#include "support/bounding_box.h"
 #include "support/mesh_generators.h"
 #include "support/safe_rounding_checks.h"
 
@@ -84,15 +85,7 @@ Vec3 unit_axis(std::mt19937& rng) {
   }
 }
 
-Vec3 box_centre(const TriangleSoup& s) {
-  Vec3 lo = s.vertices[0], hi = lo;
-  for (const Vec3& v : s.vertices)
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], v[k]);
-      hi[k] = std::max(hi[k], v[k]);
-    }
-  return {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
-}
+Vec3 box_centre(const TriangleSoup& s) { return bounding_box(s.vertices).centre(); }
 
 // `soup` and copies turned by 2 pi i / k about `axis` through its box centre (the copy at 0
 // untouched), copy i labelled {i}: bench/round_safe_sweep.py's rot3 for k = 3, with `turned`.

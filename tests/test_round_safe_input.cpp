@@ -20,6 +20,7 @@
 #include "arrangements/round_mesh.h"
 #include "round_merged_input.h"
 #include "round_snapped_planes.h"
+#include "support/bounding_box.h"
 #include "support/exact_soups.h"
 #include "support/mesh_generators.h"
 #include "support/safe_rounding_checks.h"
@@ -57,14 +58,12 @@ TEST(RoundSafeInput, NearlyCoincidentCopiesMergeAtTheirInputVertices) {
   // faces that all three copies cover (vertices left unmerged at the smallest distance
   // that settles it keep a few faces in two or three layers, within ulps of each other).
   double input_area = 0, rounded_area = 0, shared_area = 0;
-  auto area = [](const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    return 0.5 * std::hypot(u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]);
-  };
-  for (const Tri& f : soup.triangles) input_area += area(soup.vertices[f[0]], soup.vertices[f[1]], soup.vertices[f[2]]);
+  using tritri_test::rounding::triangle_area;
+  for (const Tri& f : soup.triangles)
+    input_area += triangle_area(soup.vertices[f[0]], soup.vertices[f[1]], soup.vertices[f[2]]);
   for (std::size_t t = 0; t < r.triangles.size(); ++t) {
     const Tri& f = r.triangles[t];
-    const double a = area(r.vertices[f[0]], r.vertices[f[1]], r.vertices[f[2]]);
+    const double a = triangle_area(r.vertices[f[0]], r.vertices[f[1]], r.vertices[f[2]]);
     rounded_area += a;
     if (r.label_sets[r.label_set[t]].size() == 3) shared_area += a;
   }
@@ -147,14 +146,9 @@ TEST(RoundSafeInput, SnappingNearlyCoplanarFacesMakesThemExactlyCoplanar) {
 // its original.
 TriangleSoup with_shifted_copy(TriangleSoup soup, const Vec3& axis, const Vec3& direction) {
   soup.polygon.clear();  // concatenate keeps no polygon ids
-  Vec3 lo = soup.vertices[0], hi = lo;
-  for (const Vec3& v : soup.vertices)
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], v[k]);
-      hi[k] = std::max(hi[k], v[k]);
-    }
-  const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
-  const Vec3 centre{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+  const BoundingBox box = bounding_box(soup.vertices);
+  const double diagonal = box.diagonal();
+  const Vec3 centre = box.centre();
   const Vec3 shift{1e-9 * diagonal * direction[0], 1e-9 * diagonal * direction[1], 1e-9 * diagonal * direction[2]};
   return concatenate(soup, turned(soup, centre, axis, 1e-7, shift));
 }

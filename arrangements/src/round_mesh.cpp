@@ -20,6 +20,7 @@
 #include "round_snapped_planes.h"
 #include "round_per_vertex.h"
 #include "round_rerouting.h"
+#include "support/bounding_box.h"
 #include "support/cell_grid.h"
 #include "support/mesh_on_positions.h"
 #include "support/rounding_grid.h"
@@ -143,17 +144,6 @@ double largest_magnitude(const std::vector<Vec3>& V) {
   return largest;
 }
 
-double bounding_box_diagonal(const std::vector<Vec3>& V) {
-  if (V.empty()) return 0;
-  Vec3 lo = V[0], hi = V[0];
-  for (const Vec3& p : V)
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
-  return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
-}
-
 // True when arranging changed nothing: the mesh was an arrangement already.
 bool unchanged(const ArrangeStats& s) {
   return s.intersecting_pairs == 0 && s.merged_vertices == 0 && s.removed_degenerate == 0 &&
@@ -178,7 +168,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   // nothing at worst): every step's result is refused beyond that, and the next step tried.
   // A model only a few ulps wide may move by 16 ulps (rounding to nearest moves it by one),
   // but not vanish.
-  const double diagonal = bounding_box_diagonal(nearest.vertices), move_limit = std::max(diagonal / 64, 16 * ulp);
+  const double diagonal = bounding_box(nearest.vertices).diagonal(), move_limit = std::max(diagonal / 64, 16 * ulp);
   auto finish = [&](RoundedMesh rounded, double max_move, double grid) -> std::optional<RoundedMesh> {
     if (max_move > move_limit || (rounded.triangles.empty() && !mesh.triangles.empty())) return std::nullopt;
     r.grid = grid;

@@ -36,7 +36,14 @@ inline Vec3 as_double(const tritri::ImplicitPoint& p) { return tritri::to_double
 inline Vec3 as_double(const ExactVec3& p) { return tritri::to_double(p); }
 inline Vec3 as_double(const Vec3& p) { return p; }
 
-// Area of every triangle summed per source (doubles: a measure, not a decision).
+// Area of the triangle (a, b, c) (doubles: a measure, not a decision).
+inline double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
+  return 0.5 * std::sqrt(x * x + y * y + z * z);
+}
+
+// Area of every triangle summed per source.
 template <class Mesh>
 std::map<std::int64_t, double> area_per_source(const Mesh& m, double& total) {
   std::vector<Vec3> V;
@@ -44,10 +51,7 @@ std::map<std::int64_t, double> area_per_source(const Mesh& m, double& total) {
   std::map<std::int64_t, double> area;
   total = 0;
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-    const Vec3 &a = V[m.triangles[t][0]], &b = V[m.triangles[t][1]], &c = V[m.triangles[t][2]];
-    const Vec3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
-    const double at = 0.5 * std::sqrt(x * x + y * y + z * z);
+    const double at = triangle_area(V[m.triangles[t][0]], V[m.triangles[t][1]], V[m.triangles[t][2]]);
     area[m.source[t]] += at;
     total += at;
   }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "support/bounding_box.h"
+
 namespace arrangements {
 namespace {
 
@@ -71,13 +73,8 @@ TriangleSoup grid(int n, double cell, double z0, double x0, double y0) {
 }
 
 TriangleSoup rotated_copies(const TriangleSoup& soup, int k) {
-  Vec3 lo = soup.vertices.front(), hi = lo;
-  for (const Vec3& v : soup.vertices)
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = std::min(lo[a], v[a]);
-      hi[a] = std::max(hi[a], v[a]);
-    }
-  const double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]);
+  const Vec3 centre = bounding_box(soup.vertices).centre();
+  const double cx = centre[0], cy = centre[1];
   TriangleSoup s;
   for (int c = 0; c < k; ++c) {
     const double angle = 2 * std::numbers::pi * c / k, ca = std::cos(angle), sa = std::sin(angle);
