@@ -69,7 +69,7 @@ options:
                           coarser grids only at the conflicts, then coarser grids (each
                           after merging input vertices within its spacing); no vertex
                           moves by more than a 64th of the model's diagonal; provenance
-                          kept; exit status 4 if nothing settles within 256 passes.
+                          kept; exit status 4 if nothing settles within 384 passes.
                           Stats round_*
   --check                 verify the arrangement exactly: every pair of triangles with
                           overlapping boxes meets only in shared vertices and edges

@@ -136,7 +136,7 @@
 namespace arrangements {
 
 struct RoundSafeOptions {
-  int max_passes = 256;  // passes of rounding and arranging, then rounds of the last resorts
+  int max_passes = 384;  // passes of rounding and arranging, then rounds of the last resorts
   int threads = 0;  // worker threads of the pipeline runs: 0 for all cores
   // The input that `mesh` is the arrangement of (double path only; optional): enables the
   // input steps (merging input vertices, snapping nearly coplanar faces).
