@@ -111,9 +111,12 @@
 //   with many conflicts (three copies of a sphere with 21 meridians or more rotated by
 //   2 pi / 3 about its box centre, whose seams meet in clusters of triple points near the
 //   poles: bench/round_safe_sweep.py measures how often); without options.input, also
-//   copies whose vertices coincide to 1e-16 or 1e-7, and nearly coplanar faces. At every
-//   level the rounded layers cross again in as many places, their conflicts are not within
-//   an ulp of a feature, and coarsening them only spreads them. The exact output (--exact) is always available.
+//   copies whose vertices coincide to 1e-16 or 1e-7, nearly coplanar faces and contacts.
+//   At every level the rounded layers cross again in as many places, their conflicts are
+//   not within an ulp of a feature, and coarsening them only spreads them. Also models of
+//   thousands of triangles only a few thousand ulps wide (features of tens of ulps: a mesh
+//   scaled by 2^-30 and moved to 1e6), which no step rounds within the move limit. The
+//   exact output (--exact) is always available.
 //   Provenance is kept: a triangle of the result lies in (the rounded image of) the input
 //   triangle `source` names, with the union of labels of every input triangle covering it;
 //   triangles that collapsed to a segment or a point are gone (they had no area).
