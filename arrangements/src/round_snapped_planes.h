@@ -35,7 +35,7 @@ namespace arrangements {
 struct SnappedPlanes {
   ExactTriangleSoup soup;  // the input with snapped vertices (rationals), triangles and
                            // provenance unchanged, no polygon ids (a move may fold a polygon)
-  std::size_t groups = 0;  // groups of layers made coplanar
+  std::size_t groups = 0;  // groups made flat: of layers, or (with contacts) touched by a corner
   std::size_t moved = 0;   // vertices moved
   double max_move = 0;     // an upper bound of the largest distance a vertex moved
 };
