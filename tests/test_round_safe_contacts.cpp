@@ -25,6 +25,7 @@
 #include "arrangements/round_mesh.h"
 #include "round_snapped_planes.h"
 #include "support/bounding_box.h"
+#include "support/exact_oracle.h"
 #include "support/mesh_generators.h"
 #include "support/safe_rounding_checks.h"
 
@@ -33,28 +34,6 @@ namespace {
 using namespace arrangements;
 using tritri_test::rounding::expect_safe_rounding;
 using Q = CGAL::Gmpq;
-
-// The union of `parts` (each labelled {0}, {1}, ... in its label sets' order), each part's
-// labels shifted past those of the parts before it (concatenate labels only two), source =
-// triangle index.
-TriangleSoup labelled_union(const std::vector<TriangleSoup>& parts) {
-  TriangleSoup s;
-  for (const TriangleSoup& part : parts) {
-    const int base = static_cast<int>(s.vertices.size()), sets = static_cast<int>(s.label_sets.size());
-    s.vertices.insert(s.vertices.end(), part.vertices.begin(), part.vertices.end());
-    for (std::size_t t = 0; t < part.triangles.size(); ++t) {
-      const Tri& f = part.triangles[t];
-      s.triangles.push_back({base + f[0], base + f[1], base + f[2]});
-      s.label_set.push_back(sets + part.label_set[t]);
-      s.source.push_back(static_cast<std::int64_t>(s.source.size()));
-    }
-    for (LabelSet set : part.label_sets) {
-      for (std::uint32_t& l : set) l += static_cast<std::uint32_t>(sets);
-      s.label_sets.push_back(set);
-    }
-  }
-  return s;
-}
 
 // Cherchi's sc2 (cherchi_arrangements/sc2.off, its vertex and triangle order): A =
 // (0,0,0), (1,0,0), (1,1,0) and B = (1.2,0.5,0), (0,0,0), (1,1,1), whose edge from (0,0,0)
@@ -93,7 +72,7 @@ TriangleSoup turned_copies(const TriangleSoup& soup, const Vec3& axis, int k) {
   std::vector<TriangleSoup> parts{soup};
   for (int i = 1; i < k; ++i)
     parts.push_back(turned(soup, box_centre(soup), axis, 2 * std::numbers::pi * i / k, {0, 0, 0}));
-  return labelled_union(parts);
+  return concatenate(parts);
 }
 
 // Figures of a family of cases: how many rounding to nearest did not settle, how many of
@@ -180,13 +159,6 @@ TEST(RoundSafeContacts, TurnedCopiesOfAnEdgeOnAFaceSettleBySnappingContacts) {
   EXPECT_GT(shared.snapped, 0);  // the contacts step, not only the passes and rerouting
 }
 
-// n . (p - a) for the plane of (a, b, c), n = (b - a) x (c - a), in exact rationals.
-Q offset(const ExactVec3& a, const ExactVec3& b, const ExactVec3& c, const ExactVec3& p) {
-  const Q u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const Q n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-  return n[0] * (p[0] - a[0]) + n[1] * (p[1] - a[1]) + n[2] * (p[2] - a[2]);
-}
-
 TEST(RoundSafeContacts, ContactsAreMadeExact) {
   // T: the plane z = x / 2 + y / 4 (normal (-1/2, -1/4, 1)), every coordinate below a
   // double. Each other triangle has one or two corners 2^-50 or 2^-51 off T's plane
@@ -202,8 +174,11 @@ TEST(RoundSafeContacts, ContactsAreMadeExact) {
   s.label_sets = {{0}};
   s.source = {0, 1, 2, 3};
   const ExactTriangleSoup original = to_exact(s);
+  // The exact side of T's plane: 0 on it.
   const auto off_plane = [&](const ExactVec3& p) {
-    return offset(original.vertices[0], original.vertices[1], original.vertices[2], p);
+    using tritri_test::exact;
+    return tritri_test::orient3d(exact(original.vertices[0]), exact(original.vertices[1]),
+                                 exact(original.vertices[2]), exact(p));
   };
   for (int v : {3, 6, 7, 9}) ASSERT_NE(off_plane(original.vertices[v]), 0) << v;
 
@@ -241,7 +216,7 @@ TriangleSoup apex_on_box(double u, double v) {
   tetra.label_set = {0, 0, 0, 0};
   tetra.label_sets = {{0}};
   tetra.source = {0, 1, 2, 3};
-  return labelled_union({box({0, 0, 0}, {1, 1, 1}), tetra});
+  return concatenate({box({0, 0, 0}, {1, 1, 1}), tetra});
 }
 
 TEST(RoundSafeContacts, ApexOnAFaceTurned) {
@@ -259,7 +234,7 @@ TEST(RoundSafeContacts, ApexOnAFaceTurned) {
     alone.add(one, "apex on a face " + std::to_string(i));
     if (i % 2 == 1) {
       const TriangleSoup other = turned(body, box_centre(body), unit_axis(rng), angle / 2, {0.3, 0.2, 0.1});
-      pairs.add(labelled_union({one, other}), "two apexes on faces " + std::to_string(i));
+      pairs.add(concatenate({one, other}), "two apexes on faces " + std::to_string(i));
     }
   }
   alone.print("apex on a face, one body");

@@ -90,7 +90,7 @@ TriangleSoup turned_cubes() {
   const TriangleSoup a = box({0, 0, 0}, {1, 1, 1});
   const TriangleSoup b = turned_about_diagonal(a, {0.5, 0.5, 0.5}, {0.3, 0.2, 0});
   const TriangleSoup c = turned_about_diagonal(b, {0.8, 0.7, 0.5}, {0.1, 0.3, 0});
-  return concatenate(concatenate(a, b), c);
+  return concatenate({a, b, c});
 }
 
 TEST(RoundSafeInput, NearlyCoplanarFacesOfTurnedCubesAreSnappedCoplanar) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "support/bounding_box.h"
@@ -102,15 +103,26 @@ TriangleSoup turned(TriangleSoup soup, const Vec3& centre, const Vec3& axis, dou
   return soup;
 }
 
-TriangleSoup concatenate(const TriangleSoup& a, const TriangleSoup& b) {
-  TriangleSoup s = a;
-  const int base = static_cast<int>(a.vertices.size());
-  s.vertices.insert(s.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (const Tri& t : b.triangles) s.triangles.push_back({base + t[0], base + t[1], base + t[2]});
-  finish(s);
-  s.label_sets = {LabelSet{0}, LabelSet{1}};
-  for (std::size_t i = a.triangles.size(); i < s.triangles.size(); ++i) s.label_set[i] = 1;
+TriangleSoup concatenate(const std::vector<TriangleSoup>& parts) {
+  TriangleSoup s;
+  for (const TriangleSoup& part : parts) {
+    const int base = static_cast<int>(s.vertices.size()), sets = static_cast<int>(s.label_sets.size());
+    s.vertices.insert(s.vertices.end(), part.vertices.begin(), part.vertices.end());
+    for (std::size_t t = 0; t < part.triangles.size(); ++t) {
+      const Tri& f = part.triangles[t];
+      s.triangles.push_back({base + f[0], base + f[1], base + f[2]});
+      s.label_set.push_back(sets + part.label_set[t]);
+    }
+    for (LabelSet set : part.label_sets) {
+      for (std::uint32_t& l : set) l += static_cast<std::uint32_t>(sets);
+      s.label_sets.push_back(set);
+    }
+  }
+  s.source.resize(s.triangles.size());
+  for (std::size_t i = 0; i < s.source.size(); ++i) s.source[i] = static_cast<std::int64_t>(i);
   return s;
 }
+
+TriangleSoup concatenate(const TriangleSoup& a, const TriangleSoup& b) { return concatenate({a, b}); }
 
 }  // namespace arrangements

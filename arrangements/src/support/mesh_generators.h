@@ -12,11 +12,14 @@
 //                   centre by 2*pi*i/k (a workload whose intersections grow with k^2)
 //   turned          a soup turned by an angle about a unit axis through a centre, then
 //                   moved (Rodrigues' rotation matrix, in doubles)
-//   concatenate     the union of two soups (labels: first 0, second 1)
+//   concatenate     the union of soups, each part's label sets shifted past those of the
+//                   parts before it (two one-label parts: labels 0 and 1); no polygon ids
 //
-// All return a TriangleSoup with one label set {0} (concatenate: {0} and {1}) and
-// `source` = triangle index.
+// All return a TriangleSoup with one label set {0} (concatenate: the parts' label sets)
+// and `source` = triangle index.
 #pragma once
+
+#include <vector>
 
 #include "arrangements/triangle_soup.h"
 
@@ -27,6 +30,7 @@ TriangleSoup box(const Vec3& lo, const Vec3& hi);
 TriangleSoup grid(int n, double cell, double z0, double x0 = 0, double y0 = 0);
 TriangleSoup rotated_copies(const TriangleSoup& soup, int k);
 TriangleSoup turned(TriangleSoup soup, const Vec3& centre, const Vec3& axis, double angle, const Vec3& shift);
-TriangleSoup concatenate(const TriangleSoup& a, const TriangleSoup& b);
+TriangleSoup concatenate(const std::vector<TriangleSoup>& parts);
+TriangleSoup concatenate(const TriangleSoup& a, const TriangleSoup& b);  // concatenate({a, b})
 
 }  // namespace arrangements
