@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -210,8 +211,13 @@ TEST(RoundSafe, RoundingPerVertexSettlesGrazingCopiesOnCoarserGridsAtTheConflict
   }
   ASSERT_FALSE(check_arrangement(RoundedMesh{nearest, m.triangles, m.source, m.label_set, m.label_sets}).ok());
   const std::optional<PerVertexRounding> per =
-      round_per_vertex(exact, nearest, m.triangles, m.source, m.label_set, m.label_sets, largest, 64);
+      round_per_vertex(exact, nearest, m.triangles, m.source, m.label_set, m.label_sets, largest, 64,
+                       std::numeric_limits<double>::infinity());
   ASSERT_TRUE(per.has_value());
+  // Within half that move it stops (no vertex moves beyond its limit).
+  const std::optional<PerVertexRounding> half = round_per_vertex(
+      exact, nearest, m.triangles, m.source, m.label_set, m.label_sets, largest, 64, per->max_move / 2);
+  EXPECT_FALSE(half.has_value());
   EXPECT_TRUE(check_arrangement(per->mesh).ok());
   const ArrangeStats s = arrange(as_input(per->mesh), ArrangeOptions{}).stats;
   EXPECT_EQ(s.intersection_points + s.intersecting_pairs + s.merged_vertices + s.removed_degenerate, 0u);

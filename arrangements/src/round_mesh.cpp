@@ -50,14 +50,27 @@ double level_spacing(double largest, int level) { return level == 0 ? 0 : grid_s
 // is not a double and lies within `snap` of a double vertex (exact squared distance) is
 // merged into the nearest one. Triangles that collapse to an edge or a point are dropped;
 // vertices are renumbered in first-use order. `max_move` receives the largest distance a
-// vertex moved.
+// vertex moved. When the double vertices alone move by more than `move_limit` (a grid too
+// coarse for the model), it stops there: an empty mesh, with max_move above the limit.
 template <class Mesh>
-RoundedMesh round_mesh(const Mesh& mesh, double h, double snap, double& max_move) {
+RoundedMesh round_mesh(const Mesh& mesh, double h, double snap, double& max_move,
+                       double move_limit = std::numeric_limits<double>::infinity()) {
   const std::size_t nv = mesh.vertices.size();
   std::vector<char> fixed(nv);
-  std::vector<ExactVec3> exact(nv);
+  std::vector<Vec3> position(nv);
+  std::vector<double> move(nv, 0.0);
+  // The doubles first: only a coarser grid moves them, and the rationals are needed only then.
   tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
     fixed[v] = is_double(mesh.vertices[v]);
+    if (!fixed[v]) return;
+    const Vec3 d = double_coordinates(mesh.vertices[v]);
+    position[v] = round_point(d, h);
+    move[v] = position[v] == d ? 0.0 : distance_bound(to_exact(d), position[v]);
+  });
+  max_move = nv == 0 ? 0.0 : *std::max_element(move.begin(), move.end());
+  if (max_move > move_limit) return {};
+  std::vector<ExactVec3> exact(nv);
+  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
     if (!fixed[v]) exact[v] = exact_coordinates(mesh.vertices[v]);
   });
   auto nearest_of = [&](std::size_t v) {
@@ -91,28 +104,18 @@ RoundedMesh round_mesh(const Mesh& mesh, double h, double snap, double& max_move
       });
     });
   }
-  std::vector<Vec3> position(nv);
   std::vector<int> representative(nv);
-  std::vector<double> move(nv, 0.0);
   tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
     representative[v] = target[v] >= 0 ? target[v] : static_cast<int>(v);
     if (target[v] >= 0) {
       move[v] = distance_bound(exact[v], double_coordinates(mesh.vertices[target[v]]));
       return;
     }
-    position[v] = round_point(nearest_of(v), h);
+    if (!fixed[v]) position[v] = round_point(nearest_of(v), h);
     for (double c : position[v])
       if (!std::isfinite(c))
         throw RoundingError("round: vertex " + std::to_string(v) + " rounds beyond the double range");
-    if (fixed[v]) {
-      // Only a coarser grid moves a double; the rationals are needed only then.
-      const Vec3 d = double_coordinates(mesh.vertices[v]);
-      move[v] = position[v] == d
-                    ? 0.0
-                    : distance_bound(to_exact(d), position[v]);
-    } else {
-      move[v] = distance_bound(exact[v], position[v]);
-    }
+    if (!fixed[v]) move[v] = distance_bound(exact[v], position[v]);
   });
   max_move = nv == 0 ? 0.0 : *std::max_element(move.begin(), move.end());
 
@@ -150,8 +153,12 @@ bool unchanged(const ArrangeStats& s) {
          s.removed_duplicate == 0 && s.out_vertices == s.in_vertices && s.out_triangles == s.in_triangles;
 }
 
+// move_cap: the largest move the caller accepts (a changed input's limit less the change's
+// own move; infinity from round_safe). Every step stops as soon as its move exceeds the
+// limit: its result would be refused (this is what makes a refusal cheap).
 template <class Mesh>
-RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, RoundReport* report) {
+RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, RoundReport* report,
+                            double move_cap) {
   if (options.max_passes < 1)
     throw std::invalid_argument("round_safe: max_passes must be at least 1, got " +
                                 std::to_string(options.max_passes));
@@ -168,7 +175,8 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   // nothing at worst): every step's result is refused beyond that, and the next step tried.
   // A model only a few ulps wide may move by 16 ulps (rounding to nearest moves it by one),
   // but not vanish.
-  const double diagonal = bounding_box(nearest.vertices).diagonal(), move_limit = std::max(diagonal / 64, 16 * ulp);
+  const double diagonal = bounding_box(nearest.vertices).diagonal();
+  const double move_limit = std::min(std::max(diagonal / 64, 16 * ulp), move_cap);
   auto finish = [&](RoundedMesh rounded, double max_move, double grid) -> std::optional<RoundedMesh> {
     if (max_move > move_limit || (rounded.triangles.empty() && !mesh.triangles.empty())) return std::nullopt;
     r.grid = grid;
@@ -181,9 +189,13 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   auto passes_at_level = [&](int level) -> std::optional<RoundedMesh> {
     // Each level starts again from the exact arrangement.
     const double h = level_spacing(largest, level);
-    const double snap = level == 0 ? ulp : h;
-    RoundedMesh rounded = level == 0 ? nearest : round_mesh(mesh, h, snap, move);
+    // No vertex snaps farther than the move limit (the result would be refused): on a model
+    // a few hundred ulps wide, a coarse level's snap would make every double vertex a
+    // candidate of every other one.
+    const double snap = level == 0 ? ulp : std::max(ulp, std::min(h, move_limit));
+    RoundedMesh rounded = level == 0 ? nearest : round_mesh(mesh, h, snap, move, move_limit);
     double level_move = move;
+    if (level_move > move_limit) return std::nullopt;
     const std::size_t level_triangles = rounded.triangles.size();
     for (int pass = 1;; ++pass) {
       ++r.passes;
@@ -199,8 +211,9 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
                          again.stats.out_triangles > level_triangles + level_triangles / 10;
       last = again.stats;
       if (worse || r.passes >= options.max_passes || (pass >= kPassesPerLevel && !no_new_points)) break;
-      rounded = round_mesh(again.mesh, h, snap, move);
+      rounded = round_mesh(again.mesh, h, snap, move, move_limit - level_move);
       level_move += move;
+      if (level_move > move_limit) break;
     }
     return std::nullopt;
   };
@@ -263,8 +276,8 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       // makes as many new ones; a cycle that grows the mesh by more than a tenth feeds on
       // itself the same way.
       const std::size_t triangles = best.triangles.size();
-      if (violations > triangles / 20 ||
-          triangles > mesh.triangles.size() + mesh.triangles.size() / 10 || r.passes >= reroute_limit)
+      if (violations > triangles / 20 || triangles > mesh.triangles.size() + mesh.triangles.size() / 10 ||
+          r.passes >= reroute_limit || cycle_move > move_limit)
         break;
       ++r.passes;
       ++r.reroute_cycles;
@@ -278,12 +291,14 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   // that does not settle soon is not the right one); `note` records the change in the
   // report. The bound adds the input's largest move.
   auto settle_input = [&](const auto& soup, double input_move, auto note) -> std::optional<RoundedMesh> {
+    if (input_move > move_limit) return std::nullopt;
     RoundSafeOptions inner = options;
     inner.input = nullptr;
     inner.max_passes = std::min(kInputBudget, options.max_passes - r.passes);
     RoundReport done;
     try {
-      RoundedMesh rounded = round_safe(arrange(soup, arrange_options).mesh, inner, &done);
+      RoundedMesh rounded =
+          round_in_passes(arrange(soup, arrange_options).mesh, inner, &done, move_limit - input_move);
       done.passes += r.passes;
       note(done);
       const RoundReport before = r;
@@ -355,8 +370,10 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     auto per_vertex = [&](const std::vector<Tri>& triangles, const std::vector<std::int64_t>& source,
                           const std::vector<int>& label_set, const std::vector<LabelSet>& label_sets,
                           double extra_move) -> std::optional<RoundedMesh> {
-      std::optional<PerVertexRounding> per = round_per_vertex(
-          exact, nearest_positions, triangles, source, label_set, label_sets, largest, options.max_passes - r.passes);
+      if (extra_move > move_limit) return std::nullopt;
+      std::optional<PerVertexRounding> per =
+          round_per_vertex(exact, nearest_positions, triangles, source, label_set, label_sets, largest,
+                           options.max_passes - r.passes, move_limit - extra_move);
       if (!per) return std::nullopt;
       r.passes += per->rounds;
       r.coarsened = per->coarsened;
@@ -412,11 +429,11 @@ RoundedMesh round_nearest(const ExactOutputMesh& mesh) {
 }
 
 RoundedMesh round_safe(const OutputMesh& mesh, const RoundSafeOptions& options, RoundReport* report) {
-  return round_in_passes(mesh, options, report);
+  return round_in_passes(mesh, options, report, std::numeric_limits<double>::infinity());
 }
 
 RoundedMesh round_safe(const ExactOutputMesh& mesh, const RoundSafeOptions& options, RoundReport* report) {
-  return round_in_passes(mesh, options, report);
+  return round_in_passes(mesh, options, report, std::numeric_limits<double>::infinity());
 }
 
 }  // namespace arrangements

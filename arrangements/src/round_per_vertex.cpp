@@ -25,7 +25,7 @@ std::optional<PerVertexRounding> round_per_vertex(const std::vector<ExactVec3>& 
                                                   const std::vector<std::int64_t>& source,
                                                   const std::vector<int>& label_set,
                                                   const std::vector<LabelSet>& label_sets, double largest,
-                                                  int max_rounds) {
+                                                  int max_rounds, double move_limit) {
   const std::size_t nv = nearest.size();
   ViolationTracker tracker;  // only the vertices raised in a round move
   std::vector<int> level(nv, 0);
@@ -66,6 +66,7 @@ std::optional<PerVertexRounding> round_per_vertex(const std::vector<ExactVec3>& 
       if (level[v] == kMaxLevel) return std::nullopt;
       ++level[v];
       position[v] = round_point(nearest[v], grid_spacing(largest, 2 * level[v]));
+      if (distance_bound(exact[v], position[v]) > move_limit) return std::nullopt;
     }
     if (!raised) return std::nullopt;  // a violation without vertices: cannot happen
   }

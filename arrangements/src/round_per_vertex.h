@@ -13,10 +13,10 @@
 //
 // Termination: every round that does not succeed raises the level of at least one vertex,
 // and levels are bounded, so there are at most 16 x #vertices rounds; `max_rounds` bounds
-// them further. Returns nullopt when a vertex would need a grid coarser than 2^32 ulps,
-// when 2 rounds in a row found no fewer violations than the best round before them
-// (coarsening then spreads the conflicts instead of removing them), or when the rounds
-// run out.
+// them further. Returns nullopt when a vertex would need a grid coarser than 2^32 ulps or
+// would move by more than `move_limit` (its distance_bound, support/rounding_grid.h), when
+// 2 rounds in a row found no fewer violations than the best round before them (coarsening
+// then spreads the conflicts instead of removing them), or when the rounds run out.
 // Displacement: a vertex moves by at most half a cell diagonal of its level from its
 // nearest double (reported exactly bounded, from the rationals).
 // Cost per round: one sort of the vertices and one check of the rounded mesh (support/
@@ -40,12 +40,13 @@ struct PerVertexRounding {
 
 // exact: every vertex of the exact arrangement; nearest: the same rounded to the nearest
 // double; triangles, source, label_set, label_sets: the arrangement's (output_mesh.h);
-// largest: the largest coordinate magnitude of `nearest` (the grids are its ulps).
+// largest: the largest coordinate magnitude of `nearest` (the grids are its ulps);
+// move_limit: the largest move a result may have (round_safe refuses any beyond it).
 std::optional<PerVertexRounding> round_per_vertex(const std::vector<ExactVec3>& exact,
                                                   const std::vector<Vec3>& nearest, const std::vector<Tri>& triangles,
                                                   const std::vector<std::int64_t>& source,
                                                   const std::vector<int>& label_set,
                                                   const std::vector<LabelSet>& label_sets, double largest,
-                                                  int max_rounds);
+                                                  int max_rounds, double move_limit);
 
 }  // namespace arrangements
