@@ -259,7 +259,8 @@ nb::dict arrangement_dict(std::vector<double>&& rounded, std::vector<std::uint8_
 // doubles itself: V (every row exact for it, V_is_exact all true), F, source, label_set,
 // label_sets, and stats with the round_* keys. RoundingError becomes RuntimeError.
 template <class Out>
-nb::dict safely_rounded_dict(Out&& out, int threads, const arrangements::TriangleSoup* input = nullptr) {
+nb::dict safely_rounded_dict(Out&& out, int threads, double max_move_relative,
+                             const arrangements::TriangleSoup* input = nullptr) {
   const auto nf = static_cast<std::size_t>(out.F.rows());
   arrangements::RoundedMesh rounded;
   arrangements::RoundReport report;
@@ -279,6 +280,7 @@ nb::dict safely_rounded_dict(Out&& out, int threads, const arrangements::Triangl
     };
     arrangements::RoundSafeOptions options;
     options.threads = threads;
+    options.max_move_relative = max_move_relative;
     options.input = input;
     if constexpr (std::is_same_v<std::decay_t<Out>, arrangements::EigenArrangement>) {
       arrangements::OutputMesh mesh;
@@ -323,7 +325,7 @@ nb::dict safely_rounded_dict(Out&& out, int threads, const arrangements::Triangl
 
 // The double path; exact_output adds V_exact (the exact output vertices as Fractions).
 nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels, const std::string& classifier,
-                 int threads, bool exact_output, bool round_safe) {
+                 int threads, bool exact_output, bool round_safe, double round_max_move) {
   const arrangements::ArrangeOptions options = arrange_options(classifier, threads);
   arrangements::EigenArrangement out;
   std::vector<ExactVec3> exact;
@@ -336,7 +338,7 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
     out = arrangements::detail::arrange_eigen(as_eigen(V), as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange",
                                               exact_output ? &exact : nullptr, round_safe ? &input : nullptr);
   }
-  if (round_safe) return safely_rounded_dict(std::move(out), threads, &input);
+  if (round_safe) return safely_rounded_dict(std::move(out), threads, round_max_move, &input);
   const auto nv = static_cast<std::size_t>(out.V.rows());
   std::vector<double> v(3 * nv);
   std::vector<std::uint8_t> flags(nv);
@@ -352,7 +354,7 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
 // The exact path: V as 3 #V hexadecimal "n/d" strings, row after row. The dict of arrange
 // plus V_exact; V is V_exact rounded to the nearest double (ties to even).
 nb::dict arrange_exact(const std::vector<std::string>& V, const Indices& F, std::optional<Labels> labels,
-                       const std::string& classifier, int threads, bool round_safe) {
+                       const std::string& classifier, int threads, bool round_safe, double round_max_move) {
   const arrangements::ArrangeOptions options = arrange_options(classifier, threads);
   arrangements::ExactEigenArrangement out;
   std::vector<ExactVec3> exact;
@@ -364,7 +366,7 @@ nb::dict arrange_exact(const std::vector<std::string>& V, const Indices& F, std:
     const std::optional<LabelVector> Le = label_vector(labels);
     out = arrangements::detail::arrange_eigen_exact(Ve, as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange");
   }
-  if (round_safe) return safely_rounded_dict(std::move(out), threads);
+  if (round_safe) return safely_rounded_dict(std::move(out), threads, round_max_move);
   {
     nb::gil_scoped_release release;
     const auto nv = static_cast<std::size_t>(out.V.rows());
@@ -474,7 +476,9 @@ NB_MODULE(_tritri, m) {
   // The stats keys with their meanings, as text (for the docstring of tritri.arrange).
   m.def("_stats_key_list", &arrangements::stats_key_list, nb::arg("indent"), nb::arg("column"), nb::arg("width"));
   m.def("arrange", &arrange, nb::arg("V"), nb::arg("F"), nb::arg("labels").none(), nb::arg("classifier"),
-        nb::arg("threads"), nb::arg("exact_output") = false, nb::arg("round_safe") = false);
+        nb::arg("threads"), nb::arg("exact_output") = false, nb::arg("round_safe") = false,
+        nb::arg("round_max_move") = arrangements::RoundSafeOptions{}.max_move_relative);
   m.def("arrange_exact", &arrange_exact, nb::arg("V"), nb::arg("F"), nb::arg("labels").none(), nb::arg("classifier"),
-        nb::arg("threads"), nb::arg("round_safe") = false);
+        nb::arg("threads"), nb::arg("round_safe") = false,
+        nb::arg("round_max_move") = arrangements::RoundSafeOptions{}.max_move_relative);
 }

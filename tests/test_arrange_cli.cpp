@@ -157,6 +157,12 @@ TEST(ArrangeCli, EveryHostileOptionValueIsAUsageError) {
   cases.push_back({});
   cases.push_back({"--stats"});
   cases.push_back({mesh, "--stats", "--exact", "-o", dir.path("x.ply")});
+  // The move limit: a finite number above 0, only with --round safe, once.
+  for (const std::string v : {"", "0", "-1", "0.0", "nan", "inf", "1e400", "0.5x", " 0.5", "1/64", "--stats"})
+    cases.push_back({mesh, "--stats", "--round", "safe", "--round-max-move", v});
+  cases.push_back({mesh, "--stats", "--round-max-move", "0.5"});
+  cases.push_back({mesh, "--stats", "--round", "nearest", "--round-max-move", "0.5"});
+  cases.push_back({mesh, "--stats", "--round", "safe", "--round-max-move", "0.5", "--round-max-move", "0.5"});
   expect_usage_errors(ARRANGE_BIN, "arrange", cases, dir.path());
   EXPECT_EQ(dir.entries(), std::set<std::string>({"stdout.txt", "stderr.txt", "two_triangles.off"}))
       << "nothing was written";
@@ -261,6 +267,7 @@ TEST(ArrangeCli, RoundSafeWritesAMeshThatIsAnArrangement) {
   EXPECT_EQ(run(in + " -o " + safe + " --round magic").status, 2);
   EXPECT_EQ(run(in + " -o " + safe + " --round safe --round safe").status, 2);
   EXPECT_EQ(run(in + " -o " + safe + " --round").status, 2);
+  EXPECT_EQ(run(in + " -o " + safe + " --round safe --round-max-move 0.25").status, 0);
 }
 
 // The helpers through which the tool adds its own load and write times keep t_total_s the

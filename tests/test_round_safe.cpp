@@ -283,8 +283,8 @@ TEST(RoundSafe, NoResultMovesAVertexBeyondAFractionOfTheModel) {
   // merge distances of the coarser steps are as wide as the model. Before the limit, such
   // models "settled" with moves up to half the diagonal, one of them into a single triangle
   // (bench/round_safe_sweep.py's "scaled" variant: empty meshes). Whatever round_safe returns
-  // now moves no vertex beyond a 64th of the diagonal or 16 ulps; what it cannot round
-  // within that, it refuses.
+  // now moves no vertex beyond a 64th of the diagonal or 16 ulps (the default
+  // max_move_relative); what it cannot round within that, it refuses.
   const Vec3 axis{0.3 / std::sqrt(0.98), 0.5 / std::sqrt(0.98), 0.8 / std::sqrt(0.98)};
   int settled = 0, refused = 0;
   for (int k : {30, 26}) {

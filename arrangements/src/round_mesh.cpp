@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -147,6 +148,13 @@ double largest_magnitude(const std::vector<Vec3>& V) {
   return largest;
 }
 
+// x with 6 significant digits ("0.015625", "3046.9", "1e-05").
+std::string short_number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
 // True when arranging changed nothing: the mesh was an arrangement already.
 bool unchanged(const ArrangeStats& s) {
   return s.intersecting_pairs == 0 && s.merged_vertices == 0 && s.removed_degenerate == 0 &&
@@ -162,6 +170,9 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   if (options.max_passes < 1)
     throw std::invalid_argument("round_safe: max_passes must be at least 1, got " +
                                 std::to_string(options.max_passes));
+  if (!(options.max_move_relative > 0) || !std::isfinite(options.max_move_relative))
+    throw std::invalid_argument("round_safe: max_move_relative must be a finite number above 0, got " +
+                                std::to_string(options.max_move_relative));
   ArrangeOptions arrange_options;
   arrange_options.threads = options.threads;
   double move = 0;
@@ -170,13 +181,13 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   const RoundedMesh nearest = round_mesh(mesh, 0, 0, move);
   const double largest = largest_magnitude(nearest.vertices);
   const double ulp = level_spacing(largest, 1) / 256;
-  // A result that moves a vertex by more than a 64th of the arrangement's diagonal is not
-  // a rounding of it (a grid or merge distance as wide as the model collapses it, to
-  // nothing at worst): every step's result is refused beyond that, and the next step tried.
-  // A model only a few ulps wide may move by 16 ulps (rounding to nearest moves it by one),
-  // but not vanish.
+  // A result that moves a vertex by more than a 64th of the arrangement's diagonal (by
+  // default: options.max_move_relative) is not a rounding of it (a grid or merge distance
+  // as wide as the model collapses it, to nothing at worst): every step's result is refused
+  // beyond that, and the next step tried. A model only a few ulps wide may move by 16 ulps
+  // (rounding to nearest moves it by one), but not vanish.
   const double diagonal = bounding_box(nearest.vertices).diagonal();
-  const double move_limit = std::min(std::max(diagonal / 64, 16 * ulp), move_cap);
+  const double move_limit = std::min(std::max(diagonal * options.max_move_relative, 16 * ulp), move_cap);
   auto finish = [&](RoundedMesh rounded, double max_move, double grid) -> std::optional<RoundedMesh> {
     if (max_move > move_limit || (rounded.triangles.empty() && !mesh.triangles.empty())) return std::nullopt;
     r.grid = grid;
@@ -411,8 +422,9 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       std::string(options.input != nullptr
                       ? " nor merging input vertices (within 4 to 2^32 ulps) nor snapping nearly coplanar faces"
                       : "") +
-      " settled it within a move of a 64th of the diagonal (or 16 ulps); " + std::to_string(r.passes) +
-      " passes and rounds in all (at most " +
+      " settled it within the move limit of " + short_number(move_limit / ulp) + " ulps (max_move_relative " +
+      short_number(options.max_move_relative) + " of the diagonal, " + short_number(diagonal / ulp) +
+      " ulps, or 16 ulps); " + std::to_string(r.passes) + " passes and rounds in all (at most " +
       std::to_string(options.max_passes) + ")");
 }
 

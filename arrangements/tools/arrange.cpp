@@ -68,9 +68,14 @@ options:
                           a grid of 2^8 ulps, then every vertex rounded on its own, to
                           coarser grids only at the conflicts, then coarser grids (each
                           after merging input vertices within its spacing); no vertex
-                          moves by more than a 64th of the model's diagonal; provenance
-                          kept; exit status 4 if nothing settles within 384 passes.
-                          Stats round_*
+                          moves by more than a 64th of the model's diagonal (see
+                          --round-max-move); provenance kept; exit status 4 if nothing
+                          settles within 384 passes. Stats round_*
+  --round-max-move F      with --round safe: the largest move accepted, as a fraction F
+                          of the diagonal (a finite number above 0; default 0.015625, a
+                          64th). A model only a few hundred ulps wide (tiny and far from
+                          the origin) settles only with moves of a fifth of its size or
+                          more: F = 1 accepts them
   --check                 verify the arrangement exactly: every pair of triangles with
                           overlapping boxes meets only in shared vertices and edges
                           (tritri on the implicit points; with --round safe, on the rounded
@@ -82,7 +87,7 @@ options:
                           larger values are refused (oneTBB cannot run them safely)
   --scale                 scale coordinates by a power of two into a safe range (exact)
   --help                  this text
-An option that takes a value may be given once; numbers are plain decimal digits.
+An option that takes a value may be given once; counts are plain decimal digits.
 
 )";
 
@@ -108,6 +113,7 @@ int main(int argc, char** argv) {
   int threads = 0;
   std::string classifier = "tritri";
   std::string round = "nearest";
+  double round_max_move = RoundSafeOptions{}.max_move_relative;
   detail::CommandLine args("arrange", argc, argv);
   while (args.next()) {
     const std::string& a = args.current();
@@ -127,6 +133,8 @@ int main(int argc, char** argv) {
       round = args.value("--round");
       if (round != "nearest" && round != "safe")
         args.usage_error("unknown rounding '" + round + "' (known: nearest, safe)");
+    } else if (a == "--round-max-move") {
+      round_max_move = args.positive_number("--round-max-move");
     } else if (a == "--scale") {
       scale = true;
     } else if (a == "--classifier") {
@@ -142,6 +150,7 @@ int main(int argc, char** argv) {
   if (inputs.empty()) args.usage_error("no input file");
   if (exact && args.given("--round"))
     args.usage_error("--round and --exact exclude each other (--exact does not round)");
+  if (args.given("--round-max-move") && round != "safe") args.usage_error("--round-max-move needs --round safe");
   if (output) {
     using arrangements::detail::kWriteFormats;
     const auto format = arrangements::detail::format_of(*output, kWriteFormats);
@@ -174,12 +183,16 @@ int main(int argc, char** argv) {
             const auto tr = std::chrono::steady_clock::now();
             RoundSafeOptions ro;
             ro.threads = workers;
+            ro.max_move_relative = round_max_move;
             if constexpr (std::is_same_v<std::decay_t<decltype(soup)>, TriangleSoup>) ro.input = &soup;
             RoundReport report;
             try {
               rounded = round_safe(result.mesh, ro, &report);
             } catch (const RoundingError& e) {
-              std::fprintf(stderr, "arrange: %s\n", e.what());
+              std::fprintf(stderr,
+                           "arrange: %s\narrange: --round-max-move accepts larger moves; --exact writes the "
+                           "arrangement without rounding\n",
+                           e.what());
               return 4;
             }
             s.round_passes = report.passes;

@@ -53,6 +53,7 @@ MAX_THREADS (1024): the largest thread count arrange accepts, the same as the co
 tools' --threads (arrangements/thread_count.h explains why there is a cap).
 """
 
+import math as _math
 import numbers as _numbers
 import operator as _operator
 import os as _os
@@ -266,6 +267,24 @@ def _thread_count(threads):
     return n
 
 
+def _round_max_move(value, safe):
+    """round_max_move checked: a float above 0 (1/64 for None); given only with rounding="safe"."""
+    if value is None:
+        return 1 / 64
+    if not safe:
+        raise ValueError("tritri.arrange: round_max_move needs rounding='safe'")
+    if isinstance(value, (bool, _np.bool_)) or not isinstance(value, _numbers.Real):
+        raise ArgumentTypeError(f"tritri.arrange: round_max_move must be a finite number above 0, "
+                                f"got {_describe(value)}")
+    try:
+        x = float(value)
+    except OverflowError:  # an int or Fraction beyond the float64 range
+        x = _math.inf
+    if not (_math.isfinite(x) and x > 0):
+        raise ValueError(f"tritri.arrange: round_max_move must be a finite number above 0, got {_describe(value)}")
+    return x
+
+
 def classify(a, b):
     """Classifies exactly how triangles a and b intersect.
 
@@ -334,7 +353,8 @@ def intersections(V1, F1, V2, F2):
     return _intersections(V1a, F1a, V2a, F2a)
 
 
-def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None, rounding="nearest"):
+def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None, rounding="nearest",
+            round_max_move=None):
     """The mesh arrangement: cuts the triangles along all their intersections, exactly.
 
     V: n x 3 coordinates, float64 or exact (Python ints, fractions.Fraction, floats, in
@@ -349,7 +369,11 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None
     V_is_exact is False) or "safe" (as `arrange --round safe`, arrangements/round_mesh.h:
     the result describes a float64 mesh that is an arrangement itself, rounded, arranged
     again and rounded until nothing changes; V_is_exact is then all True, there is no
-    V_exact, and stats gives round_passes and round_max_move).
+    V_exact, and stats gives round_passes and round_max_move); round_max_move (with
+    rounding="safe"): the largest move accepted, as a fraction of the diagonal of the
+    arrangement's bounding box (a finite number above 0; None: 1/64), as `arrange
+    --round-max-move`: a model only a few hundred ulps wide (tiny and far from the origin)
+    settles only with moves of a fifth of its size or more, which 1 accepts.
     Every value of V is converted exactly. When all of them are float64 values, the double
     pipeline runs (new points implicit; with float64 input exactly what earlier versions
     returned); when some value is not, the exact pipeline runs (every point a rational,
@@ -374,12 +398,13 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None
 {stats_keys}
     Raises RuntimeError when rounding="safe" does not converge (see round_mesh.h; the
     exact output is always available), and ValueError for refused input (see the module's
-    documentation): an unknown rounding, exact_output=True with rounding="safe", a threads value
+    documentation): an unknown rounding, exact_output=True with rounding="safe", a
+    round_max_move that is not a finite number above 0 (or given without rounding="safe"), a threads value
     outside 0..MAX_THREADS, an unknown classifier, an index or label out of range, NaN or
     infinite coordinates, a coordinate beyond the float64 range (also exact ones: |x| >
     the largest float64), nothing left to arrange; ArgumentTypeError (also a ValueError)
-    for threads that is not an integer (bool, float, str, None), a classifier or rounding
-    that is not a str, exact_output that is not None or a bool, arrays of the wrong dtype, or V
+    for threads that is not an integer (bool, float, str, None), a round_max_move that is
+    not a real number (bool, str, None), a classifier or rounding that is not a str, exact_output that is not None or a bool, arrays of the wrong dtype, or V
     entries that are not real numbers.
     """
     f = "arrange"
@@ -397,6 +422,7 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None
     if safe and exact_output:
         raise ValueError("tritri.arrange: exact_output=True and rounding='safe' exclude each other "
                          "(the safely rounded mesh is float64)")
+    round_max_move = _round_max_move(round_max_move, safe)
     threads = _thread_count(threads)
     Fa = _faces(F, "F", f)
     la = None
@@ -414,9 +440,10 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None
     Va, exact_input = _coordinates(V, "V", f, _n_by_3("V", f))
     want_exact = exact_input if exact_output is None else bool(exact_output)
     if isinstance(Va, list):
-        out = _arrange_exact(_hex_rationals(Va), Fa, la, classifier, threads, safe)
+        out = _arrange_exact(_hex_rationals(Va), Fa, la, classifier, threads, safe, round_max_move)
     else:
-        out = _arrange(_vertices(Va, "V", f), Fa, la, classifier, threads, want_exact and not safe, safe)
+        out = _arrange(_vertices(Va, "V", f), Fa, la, classifier, threads, want_exact and not safe, safe,
+                       round_max_move)
     if "V_exact" in out:
         exact = out.pop("V_exact")
         if want_exact:

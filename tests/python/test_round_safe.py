@@ -17,8 +17,13 @@ tritri.arrange(..., rounding="safe") returns a float64 mesh that is itself an ar
   the last resort that merges input vertices: stats report round_merged_input > 0, and
   the result is about one sphere, most of its area with all three labels;
 - exact input (Fractions) takes the exact path and rounds safely the same way;
+- the move limit: two crossing spheres scaled by 2^-28 and moved to 1e6 (about 120 ulps
+  wide) are refused within the default (RuntimeError) and settle with round_max_move=1,
+  moving a vertex by more than a 64th of the diagonal and less than all of it;
 - refusals: an unknown rounding (ValueError), a rounding that is not a str
-  (ArgumentTypeError), exact_output=True with rounding="safe" (ValueError).
+  (ArgumentTypeError), exact_output=True with rounding="safe" (ValueError), a
+  round_max_move that is not a finite number above 0 or given without rounding="safe"
+  (ValueError), or that is not a real number (ArgumentTypeError).
 Run: scripts/test_python.sh.
 """
 
@@ -151,3 +156,32 @@ def test_bad_rounding_is_refused(copies):
         tritri.arrange(V, F, rounding=1)
     with pytest.raises(ValueError):
         tritri.arrange(V, F, rounding="safe", exact_output=True)
+
+
+def tiny_spheres_far_out(e):
+    V1, F1 = uv_sphere((0.0, 0.0, 0.0), 1.0, 12, 24)
+    V2, F2 = uv_sphere((0.6, 0.25, 0.15), 0.8, 12, 24)
+    return np.vstack([V1, V2]) * 2.0**-e + 1e6, np.vstack([F1, F2 + len(V1)])
+
+
+def test_a_larger_move_limit_settles_a_model_a_hundred_ulps_wide():
+    V, F = tiny_spheres_far_out(28)
+    with pytest.raises(RuntimeError):
+        tritri.arrange(V, F, rounding="safe")
+    out = tritri.arrange(V, F, rounding="safe", round_max_move=1)
+    assert_is_arrangement(out)
+    assert 1 / 64 < out["stats"]["round_max_move_rel"] <= 1
+
+
+def test_bad_move_limits_are_refused():
+    V, F = tiny_spheres_far_out(22)
+    for bad in (0, -1, 0.0, math.nan, math.inf, 10**400, Fr(-1, 3)):
+        with pytest.raises(ValueError):
+            tritri.arrange(V, F, rounding="safe", round_max_move=bad)
+    for bad in ("0.5", True, [0.5]):
+        with pytest.raises(tritri.ArgumentTypeError):
+            tritri.arrange(V, F, rounding="safe", round_max_move=bad)
+    with pytest.raises(ValueError):
+        tritri.arrange(V, F, round_max_move=0.5)  # rounding to nearest moves nothing beyond an ulp
+    out = tritri.arrange(V, F, rounding="safe", round_max_move=Fr(1, 2))
+    assert_is_arrangement(out)

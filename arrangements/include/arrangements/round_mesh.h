@@ -39,8 +39,8 @@
 //   from a point of the previous pass's surface; report->max_move sums the largest move
 //   of each pass of the successful level (bounded from exact coordinate differences), so
 //   every vertex of the result lies within it of the exact arrangement's surface. No
-//   result moves a vertex by more than a 64th of the exact arrangement's diagonal (or 16
-//   ulps of L, for models a few ulps wide), and no result of a mesh with triangles is
+//   result moves a vertex by more than a 64th of the exact arrangement's diagonal (by
+//   default: options.max_move_relative; or 16 ulps of L, for models a few ulps wide), and no result of a mesh with triangles is
 //   empty: a step whose result would is refused and the next one tried, so a grid or merge
 //   distance as wide as the model never collapses it.
 //   Last resorts; rounding per vertex and the rounds of rerouting do not arrange again, so
@@ -115,15 +115,18 @@
 //   At every level the rounded layers cross again in as many places, their conflicts are
 //   not within an ulp of a feature, and coarsening them only spreads them. Also models of
 //   thousands of triangles only a few thousand ulps wide (features of tens of ulps: a mesh
-//   scaled by 2^-30 and moved to 1e6), which no step rounds within the move limit. The
-//   exact output (--exact) is always available.
+//   scaled by 2^-30 and moved to 1e6), which no step rounds within the default move limit:
+//   they settle with moves of a fifth to two thirds of the diagonal, which a caller may
+//   accept (options.max_move_relative). Every step stops as soon as its move exceeds the
+//   limit, so such refusals take seconds. The exact output (--exact) is always available.
 //   Provenance is kept: a triangle of the result lies in (the rounded image of) the input
 //   triangle `source` names, with the union of labels of every input triangle covering it;
 //   triangles that collapsed to a segment or a point are gone (they had no area).
 //
 // Preconditions: a mesh as arrange() makes it (every index in range, per-triangle arrays
 // of the right size); vertices within the double range.
-// Throws std::invalid_argument for options.max_passes < 1, RoundingError when the passes
+// Throws std::invalid_argument for options.max_passes < 1 or options.max_move_relative not
+// a finite number above 0, RoundingError when the passes
 // do not converge within options.max_passes (or a vertex rounds beyond the double range);
 // `report`, when given, is filled before throwing (the passes and rounds spent).
 // Cost: round_nearest: one exact rounding per implicit vertex. round_safe: per pass one
@@ -140,6 +143,12 @@ namespace arrangements {
 
 struct RoundSafeOptions {
   int max_passes = 384;  // passes of rounding and arranging, then rounds of the last resorts
+  // The largest move accepted, as a fraction of the exact arrangement's bounding-box
+  // diagonal (16 ulps of the largest coordinate magnitude when that is more): a step whose
+  // result moves a vertex farther is refused, and the next one tried. A model only a few
+  // hundred ulps wide (a mesh scaled by 2^-30 and moved to 1e6) settles only with far
+  // larger moves, a fifth of its size or more: a caller who accepts that says so here.
+  double max_move_relative = 1.0 / 64;
   int threads = 0;  // worker threads of the pipeline runs: 0 for all cores
   // The input that `mesh` is the arrangement of (double path only; optional): enables the
   // input steps (merging input vertices, snapping nearly coplanar faces).
@@ -150,7 +159,8 @@ struct RoundReport {
   int passes = 0;                   // roundings done (1: rounding to nearest was enough)
   double max_move = 0;              // the displacement bound above (model units)
   double max_move_relative = 0;     // max_move / the diagonal of the exact arrangement's
-                                    // bounding box (never above 1/64, unless 16 ulps are more)
+                                    // bounding box (never above max_move_relative, unless
+                                    // 16 ulps are more)
   double grid = 0;                  // 0: rounded to nearest doubles (level 0); else the
                                     // spacing of the uniform grid of the level that succeeded
                                     // (the last resort: of the coarsest grid it used)

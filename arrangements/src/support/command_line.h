@@ -3,15 +3,19 @@
 // "TOOL: ... (see --help)" on stderr and exit status 2. An option with a value is given
 // at most once, and its value is the next argument, which must not look like an option
 // (`--threads --stats` is refused; write ./--x for a file named --x). Counts are parsed
-// strictly (parse_count, thread_count.h). Any other argument starting with '-' (but not
+// strictly (parse_count, thread_count.h), and so are positive numbers (the whole value a
+// finite decimal number above 0: "0.25", "1e-3"). Any other argument starting with '-' (but not
 // "-" alone) is an unknown option; the rest are operands (input files), never empty.
 #pragma once
 
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <set>
 #include <string>
 #include <string_view>
+#include <system_error>
 
 #include "arrangements/thread_count.h"
 
@@ -47,6 +51,16 @@ class CommandLine {
       usage_error(name + " needs an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got '" + v +
                   "'");
     return *n;
+  }
+
+  // The value of the option `name` as a finite number above 0.
+  double positive_number(const std::string& name) {
+    const std::string v = value(name);
+    double x = 0;
+    const auto [end, error] = std::from_chars(v.data(), v.data() + v.size(), x);
+    if (v.empty() || error != std::errc{} || end != v.data() + v.size() || !std::isfinite(x) || !(x > 0))
+      usage_error(name + " needs a finite number above 0, got '" + v + "'");
+    return x;
   }
 
   // The current argument as an operand named `what` (refused: an unknown option, empty).
