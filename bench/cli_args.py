@@ -15,6 +15,7 @@ status 2 and a message naming the option:
 Scripts set sys.dont_write_bytecode before importing this module (no bench/__pycache__).
 """
 import argparse
+import math
 import re
 from pathlib import Path
 
@@ -56,6 +57,13 @@ def seconds(lo, hi):
         return float(value)
     parse.__name__ = "seconds"
     return parse
+
+
+def positive_number(value):
+    """A finite decimal number above 0 ("0.25", "1", "1e-3"), as arrange --round-max-move takes it."""
+    if not re.fullmatch(r"([0-9]+(\.[0-9]*)?|\.[0-9]+)([eE][-+]?[0-9]+)?", value) or not 0 < float(value) < math.inf:
+        raise argparse.ArgumentTypeError(f"expected a finite number above 0, got {_shown(value)}")
+    return float(value)
 
 
 def text(value):

@@ -3,7 +3,7 @@
 
 usage: build-python/venv/bin/python bench/round_safe_sweep.py [INPUT ...] --out RESULTS.jsonl
            [--arrange build/bin/arrange] [--variants rot2,rot3,shift,scaled] [--max-triangles 20000]
-           [--seed 1] [--threads 1] [--timeout 300] [--work DIR]
+           [--seed 1] [--threads 1] [--timeout 300] [--work DIR] [--round-max-move F]
 
 A measurement, not a test: every outcome is recorded, none is a failure of the script.
 
@@ -25,7 +25,8 @@ which arrange reads back exactly). For a mesh M with bounding-box centre c and d
 The axes and the direction are pseudo-random unit vectors fixed by --seed and the variant
 (the same for every mesh). The copy at angle 0 is M itself, coordinates untouched.
 
-Runs: `arrange VARIANT.off -o OUT.obj --round safe --stats --threads T`, one process per
+Runs: `arrange VARIANT.off -o OUT.obj --round safe --stats --threads T` (with
+`--round-max-move F` when given), one process per
 variant, started through `sh` (so that peak_rss_mb is arrange's own), killed as a group
 after --timeout. OUT.obj is deleted after the run; the variant files stay in --work (a temp
 folder, removed at the end, unless --work is given).
@@ -61,7 +62,7 @@ import time
 from pathlib import Path
 
 sys.dont_write_bytecode = True  # no bench/__pycache__ for cli_args, run_collection
-from cli_args import MAX_THREADS, Parser, integer, path, seconds, text, thread_count  # noqa: E402
+from cli_args import MAX_THREADS, Parser, integer, path, positive_number, seconds, text, thread_count  # noqa: E402
 from run_collection import Progress, kill_group, parse_tool_json  # noqa: E402
 
 REPO = Path(__file__).resolve().parent.parent
@@ -214,10 +215,12 @@ def count_faces(obj):
         return None
 
 
-def run_arrange(binary, file, out, threads, timeout):
+def run_arrange(binary, file, out, threads, timeout, max_move=None):
     """(status, exit code, message, stats or None, wall seconds) of one arrange process."""
     cmd = ["sh", "-c", '"$@"; exit $?', "sh", str(binary), str(file), "-o", str(out), "--round", "safe",
            "--stats", "--threads", str(threads)]
+    if max_move is not None:
+        cmd += ["--round-max-move", repr(max_move)]
     start = time.monotonic()
     try:
         p = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
@@ -283,7 +286,7 @@ def sweep_mesh(tritri, mesh_id, file, index, args, emit):
         off = folder / f"{variant}.off"
         write_off(off, copies, F)
         out = folder / f"{variant}.out.obj"
-        result = run_arrange(args.arrange, off, out, args.threads, args.timeout)
+        result = run_arrange(args.arrange, off, out, args.threads, args.timeout, args.round_max_move)
         for leftover in (out, out.with_name(out.name + ".provenance.csv")):
             leftover.unlink(missing_ok=True)
         emit(record(mesh_id, variant, off, len(F) * len(copies), *result))
@@ -303,7 +306,9 @@ def shorten(message, width=110):
 
 def summary(rows, args, meshes):
     lines = [f"arrange --round safe on {meshes} meshes of at most {args.max_triangles:,} triangles; seed "
-             f"{args.seed}, {args.threads} thread(s), timeout {args.timeout:g} s; {args.arrange}", "",
+             f"{args.seed}, {args.threads} thread(s), timeout {args.timeout:g} s"
+             + (f", --round-max-move {args.round_max_move:g}" if args.round_max_move else "")
+             + f"; {args.arrange}", "",
              "| variant | runs | settled | refused | timeout | error | passes median | passes max "
              "| max move rel median | max move rel max | total s median | total s max | rerouted | merged input "
              "| snapped | coarsened | peak MB max |", "|---|" + "---:|" * 16]
@@ -369,6 +374,9 @@ def parse_args(argv):
     ap.add_argument("--timeout", type=seconds(0, 10**7), default=300,
                     help="seconds per arrange process, 0 for none (default: 300)")
     ap.add_argument("--work", type=path, help="keep the variant files here (default: a temp folder, removed)")
+    ap.add_argument("--round-max-move", type=positive_number, metavar="F",
+                    help="arrange --round-max-move: the largest move accepted, a fraction of the diagonal "
+                         "(default: arrange's, a 64th)")
     args = ap.parse_args(argv)
     if not (os.path.isfile(args.arrange) and os.access(args.arrange, os.X_OK)):
         ap.error(f"--arrange {args.arrange}: no such executable")

@@ -2,8 +2,9 @@
 with --variants rot2,shift it writes one JSON row per (mesh, variant) with the documented keys,
 statuses from the allowed set, round_passes >= 1 where settled, variant OFF files of exactly
 twice the input triangles whose first copy is the input, untouched; --max-triangles leaves
-out the larger mesh. Runs the real arrange: $TRITRI_ARRANGE_BIN, default build/bin/arrange;
-the test fails (does not skip) when it is missing. Needs the tritri module (load_mesh).
+out the larger mesh; --round-max-move is passed on to arrange. Runs the real arrange:
+$TRITRI_ARRANGE_BIN, default build/bin/arrange; the test fails (does not skip) when it is
+missing. Needs the tritri module (load_mesh).
 """
 import json
 import os
@@ -84,3 +85,10 @@ def test_max_triangles_leaves_out_larger_meshes(tmp_path, capsys):
     assert sorted((r["mesh"], r["variant"]) for r in rows) == [("tetrahedron.off", "rot2"),
                                                                ("tetrahedron.off", "shift")]
     assert "on 1 meshes of at most 4 triangles" in summary
+
+
+def test_round_max_move_reaches_arrange(tmp_path, capsys):
+    # arrange refuses a malformed --round-max-move with exit status 2 (an `error` row).
+    rows, summary = sweep(tmp_path, capsys, "--round-max-move", "0.5")
+    assert len(rows) == 4 and all(r["status"] == "settled" for r in rows), rows
+    assert "--round-max-move 0.5;" in summary

@@ -109,6 +109,8 @@ OPTIONS = [
     ("round_safe_sweep", "--seed", BAD_INTEGERS + ["1000000001"], "1"),
     ("round_safe_sweep", "--threads", BAD_INTEGERS + [str(cli_args.MAX_THREADS + 1)], "1"),
     ("round_safe_sweep", "--timeout", BAD_SECONDS, "1"),
+    ("round_safe_sweep", "--round-max-move", ["", "0", "0.0", "-1", "+1", " 1", "1 ", "1x", "nan", "inf", "1e400",
+                                              "1e-400", "0x10", "1/64", "1_0"], "0.5"),
     ("round_safe_sweep", "--work", [""], "w"),
 ]
 OPTIONAL_VALUE = {("pipeline_bench", "--reference-omc")}
