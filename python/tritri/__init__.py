@@ -268,9 +268,11 @@ def _thread_count(threads):
 
 
 def _round_max_move(value, safe):
-    """round_max_move checked: a float above 0 (1/64 for None); given only with rounding="safe"."""
+    """The keyword arguments that pass round_max_move on: none for None (the C++ default,
+    RoundSafeOptions::max_move_relative, applies), else a float above 0 given only with
+    rounding="safe"."""
     if value is None:
-        return 1 / 64
+        return {}
     if not safe:
         raise ValueError("tritri.arrange: round_max_move needs rounding='safe'")
     if isinstance(value, (bool, _np.bool_)) or not isinstance(value, _numbers.Real):
@@ -282,7 +284,7 @@ def _round_max_move(value, safe):
         x = _math.inf
     if not (_math.isfinite(x) and x > 0):
         raise ValueError(f"tritri.arrange: round_max_move must be a finite number above 0, got {_describe(value)}")
-    return x
+    return {"round_max_move": x}
 
 
 def classify(a, b):
@@ -422,7 +424,7 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None
     if safe and exact_output:
         raise ValueError("tritri.arrange: exact_output=True and rounding='safe' exclude each other "
                          "(the safely rounded mesh is float64)")
-    round_max_move = _round_max_move(round_max_move, safe)
+    max_move = _round_max_move(round_max_move, safe)
     threads = _thread_count(threads)
     Fa = _faces(F, "F", f)
     la = None
@@ -440,10 +442,10 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None
     Va, exact_input = _coordinates(V, "V", f, _n_by_3("V", f))
     want_exact = exact_input if exact_output is None else bool(exact_output)
     if isinstance(Va, list):
-        out = _arrange_exact(_hex_rationals(Va), Fa, la, classifier, threads, safe, round_max_move)
+        out = _arrange_exact(_hex_rationals(Va), Fa, la, classifier, threads, safe, **max_move)
     else:
         out = _arrange(_vertices(Va, "V", f), Fa, la, classifier, threads, want_exact and not safe, safe,
-                       round_max_move)
+                       **max_move)
     if "V_exact" in out:
         exact = out.pop("V_exact")
         if want_exact:
