@@ -178,6 +178,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   double move = 0;
   RoundReport r;
   ArrangeStats last{};  // what the latest pass's arrangement found
+  int last_level = 0;   // the grid level of that pass
   const RoundedMesh nearest = round_mesh(mesh, 0, 0, move);
   const double largest = largest_magnitude(nearest.vertices);
   const double ulp = level_spacing(largest, 1) / 256;
@@ -221,6 +222,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       const bool worse = (pass > 1 && !no_new_points && again.stats.intersecting_pairs >= last.intersecting_pairs) ||
                          again.stats.out_triangles > level_triangles + level_triangles / 10;
       last = again.stats;
+      last_level = level;
       if (worse || r.passes >= options.max_passes || (pass >= kPassesPerLevel && !no_new_points)) break;
       rounded = round_mesh(again.mesh, h, snap, move, move_limit - level_move);
       level_move += move;
@@ -414,8 +416,12 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   }
   if (report) *report = r;
   throw RoundingError(
-      "round_safe: the rounded mesh is still not an arrangement (the last pass of rounding and arranging found " +
-      std::to_string(last.intersecting_pairs) + " intersecting pairs, merged " + std::to_string(last.merged_vertices) +
+      "round_safe: the rounded mesh is still not an arrangement (the last pass of rounding and arranging that "
+      "ran, " +
+      (last_level == 0 ? std::string("on the nearest doubles")
+                       : "on the grid of 2^" + std::to_string(8 * last_level) + " ulps") +
+      ", found " + std::to_string(last.intersecting_pairs) + " intersecting pairs, merged " +
+      std::to_string(last.merged_vertices) +
       " vertices, removed " + std::to_string(last.removed_degenerate + last.removed_duplicate) +
       " degenerate or duplicate triangles), and neither rerouting (it stops after 3 rounds without fewer "
       "violations) nor rounding per vertex (after two rounds without fewer conflicts, or at a grid of 2^32 ulps)" +
