@@ -5,7 +5,8 @@
 // round_safe's contacts step (snap_near_coplanar_faces with contacts, round_snapped_planes.h)
 // moves the touching corners back onto the touched planes (exact rationals). Tested on its
 // own (the corner lands exactly on the plane, within the reported move; a corner near the
-// plane far from the triangle stays) and on generated inputs (turned copies of sc2, an apex
+// plane far from the triangle stays; a corner at the position of another's corner touches
+// none of its triangles) and on generated inputs (turned copies of sc2, an apex
 // on a box's face turned as one body), with every check of support/safe_rounding_checks.h.
 #include <gtest/gtest.h>
 
@@ -205,6 +206,33 @@ TEST(RoundSafeContacts, ContactsAreMadeExact) {
   }
   EXPECT_EQ(snapped.soup.triangles, s.triangles);
   EXPECT_EQ(snapped.soup.source, s.source);
+}
+
+TEST(RoundSafeContacts, CornersAtOnePositionDoNotTouch) {
+  // L1 and L2 overlap in z = 0 (one layered group, L2's plane: L2 is larger), except L1's
+  // corner v = (0.5, 0.5, e), an e = 2^-50 above. A fan of three triangles with distinct planes
+  // has its apex w at v's position (another index, as files give it), the rest far above. v
+  // lies on every fan plane but touches none: a corner at the position of one of the other's
+  // corners only meets it there. So v has one plane and lands on z = 0, where w, touching L2,
+  // lands too. (Counted as touches, v had four planes and stayed, and w moved: a crack.)
+  const double e = std::ldexp(1.0, -50), delta = std::ldexp(1.0, -46);
+  TriangleSoup s;
+  s.vertices = {{0.5, 0.5, e}, {0.9, 0.2, 0}, {0.2, 0.9, 0},  // 0-2: L1, corner 0 is v
+                {0, 0, 0}, {1.5, 0.1, 0}, {0.1, 1.5, 0},    // 3-5: L2
+                {0.5, 0.5, e},                              // 6: w
+                {0.2, 0.3, 1}, {0.9, 0.4, 1.5}, {0.4, 1.1, 2}};
+  s.triangles = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {6, 8, 9}, {6, 9, 7}};
+  s.label_set = {0, 0, 0, 0, 0};
+  s.label_sets = {{0}};
+  s.source = {0, 1, 2, 3, 4};
+  const SnappedPlanes snapped = snap_near_coplanar_faces(s, delta, 0, true);
+  const ExactVec3 on_floor = to_exact(Vec3{0.5, 0.5, 0});
+  EXPECT_EQ(snapped.soup.vertices[0], on_floor);
+  EXPECT_EQ(snapped.soup.vertices[6], on_floor);
+  for (int v = 1; v < 10; ++v) {
+    if (v == 6) continue;
+    EXPECT_EQ(snapped.soup.vertices[v], to_exact(s.vertices[v])) << v;
+  }
 }
 
 // A unit box and a tetrahedron above it whose apex touches the box's top face: at (0.5, 0.5,

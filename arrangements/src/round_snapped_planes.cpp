@@ -97,6 +97,50 @@ std::optional<QVec> onto_planes(const std::vector<const Plane*>& planes, const Q
   return x;
 }
 
+// Groups that lie on the plane of a neighbouring layered group join it. Links need each
+// triangle within delta of the other's plane, and the plane of a small triangle tilts with
+// its rounding errors: a layer linked to a large face only through small triangles, or a
+// small layered group beside a large one, stays a group of its own with a plane of its own.
+// Two such planes nearly parallel put a vertex of both on a line far off (it stays), or a
+// vertex of one off the other, and the layers cross again. So a group r takes a group g
+// whose boxes overlap one of its own (a candidate pair) when every corner of every triangle
+// of g lies within delta of r's plane (the plane of r's anchor, the larger one when both are
+// layered); the joined group keeps r's anchor and is layered. Repeated until nothing joins:
+// each join leaves one group fewer.
+void join_groups_on_planes(const std::vector<Vec3>& V, const std::vector<Tri>& F,
+                           const std::vector<std::pair<int, int>>& pairs, const std::vector<IVec>& normal,
+                           double delta, std::vector<int>& parent, std::vector<char>& layered,
+                           std::vector<int>& anchor, std::vector<double>& size) {
+  auto on_plane_of = [&](int a, int t) {
+    for (int k = 0; k < 3; ++k)
+      if (!within_plane(V[F[a][0]], V[F[a][1]], V[F[a][2]], normal[a], V[F[t][k]], delta)) return false;
+    return true;
+  };
+  std::vector<std::vector<int>> members(F.size());
+  for (int t = 0; t < static_cast<int>(F.size()); ++t) members[find(parent, t)].push_back(t);
+  for (bool joined = true; joined;) {
+    joined = false;
+    for (const auto& [s, t] : pairs) {
+      int r = find(parent, s), g = find(parent, t);
+      if (r == g || (!layered[r] && !layered[g])) continue;
+      if (!layered[r] || (layered[g] && size[g] > size[r])) std::swap(r, g);
+      if (!std::all_of(members[g].begin(), members[g].end(), [&](int u) { return on_plane_of(anchor[r], u); }))
+        continue;
+      const int root = std::min(r, g), other = std::max(r, g);
+      parent[other] = root;
+      layered[root] = 1;
+      anchor[root] = anchor[r];
+      size[root] = size[r];
+      anchor[other] = -1;
+      std::vector<int>& into = members[root];
+      std::vector<int>& from = members[other];
+      into.insert(into.end(), from.begin(), from.end());
+      std::vector<int>().swap(from);
+      joined = true;
+    }
+  }
+}
+
 }  // namespace
 
 SnappedPlanes snap_near_coplanar_faces(const TriangleSoup& input, double delta, int threads, bool contacts) {
@@ -173,7 +217,11 @@ SnappedPlanes snap_near_coplanar_faces(const TriangleSoup& input, double delta, 
       const int near_corners = near[side][0] + near[side][1] + near[side][2];
       for (int k = 0; k < 3; ++k) {
         const int v = mine[k];
-        if (!near[side][k] || v == other[0] || v == other[1] || v == other[2]) continue;
+        // A corner at the position of one of the other's corners touches it there only: the
+        // arrangement merges the two, and neither plane needs to move.
+        if (!near[side][k] || v == other[0] || v == other[1] || v == other[2] || V[v] == V[other[0]] ||
+            V[v] == V[other[1]] || V[v] == V[other[2]])
+          continue;
         if (near_corners >= 2 || in_box(other, V[v])) touch[i] |= static_cast<unsigned char>(1u << (3 * side + k));
       }
     }
@@ -209,6 +257,7 @@ SnappedPlanes snap_near_coplanar_faces(const TriangleSoup& input, double delta, 
       size[r] = n2;
     }
   }
+  join_groups_on_planes(V, F, pairs, normal, delta, parent, layered, anchor, size);
   std::vector<int> plane_of(F.size(), -1);
   std::vector<Plane> planes;
   for (int r = 0; r < nf; ++r)
