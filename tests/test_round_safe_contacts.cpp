@@ -28,6 +28,7 @@
 #include "support/bounding_box.h"
 #include "support/exact_oracle.h"
 #include "support/mesh_generators.h"
+#include "support/random_turns.h"
 #include "support/safe_rounding_checks.h"
 
 namespace {
@@ -35,6 +36,7 @@ namespace {
 using namespace arrangements;
 using tritri_test::rounding::expect_safe_rounding;
 using Q = CGAL::Gmpq;
+using tritri_test::unit_axis;
 
 // Cherchi's sc2 (cherchi_arrangements/sc2.off, its vertex and triangle order): A =
 // (0,0,0), (1,0,0), (1,1,0) and B = (1.2,0.5,0), (0,0,0), (1,1,1), whose edge from (0,0,0)
@@ -52,17 +54,6 @@ TriangleSoup sc2(bool shared) {
   s.label_sets = {{0}};
   s.source = {0, 1};
   return s;
-}
-
-// A pseudo-random unit vector (std::mt19937's output is fixed by the standard, its
-// distributions are not): uniform in the unit ball, away from 0, normalised.
-Vec3 unit_axis(std::mt19937& rng) {
-  for (;;) {
-    Vec3 v;
-    for (double& x : v) x = 2.0 * rng() / 4294967296.0 - 1.0;
-    const double n = std::hypot(v[0], v[1], v[2]);
-    if (n > 0.1 && n <= 1) return {v[0] / n, v[1] / n, v[2] / n};
-  }
 }
 
 Vec3 box_centre(const TriangleSoup& s) { return bounding_box(s.vertices).centre(); }
@@ -257,7 +248,7 @@ TEST(RoundSafeContacts, ApexOnAFaceTurned) {
   for (int i = 0; i < 24; ++i) {
     const TriangleSoup body = i % 2 == 0 ? apex_on_box(0.5, 0.5) : apex_on_box(0.375 + 0.0625 * (i % 3), 0.625);
     const Vec3 axis = unit_axis(rng);
-    const double angle = 2 * std::numbers::pi * (rng() / 4294967296.0);
+    const double angle = tritri_test::turn_angle(rng);
     const TriangleSoup one = turned(body, box_centre(body), axis, angle, {0, 0, 0});
     alone.add(one, "apex on a face " + std::to_string(i));
     if (i % 2 == 1) {

@@ -13,7 +13,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -24,11 +23,14 @@
 #include "support/bounding_box.h"
 #include "support/exact_oracle.h"
 #include "support/mesh_generators.h"
+#include "support/random_turns.h"
 #include "support/safe_rounding_checks.h"
 
 namespace {
 
 using namespace arrangements;
+using tritri_test::turn_angle;
+using tritri_test::unit_axis;
 
 TriangleSoup triangles(const std::vector<Vec3>& vertices, unsigned label) {
   TriangleSoup s;
@@ -57,19 +59,6 @@ TriangleSoup large_and_small_layers(double small) {
                  {x + small / 2, y + small, 0}},
                 1u));
 }
-
-// A pseudo-random unit vector (std::mt19937's output is fixed by the standard, its
-// distributions are not).
-Vec3 unit_axis(std::mt19937& rng) {
-  for (;;) {
-    Vec3 v;
-    for (double& c : v) c = 2.0 * rng() / 4294967296.0 - 1.0;
-    const double n = std::hypot(v[0], v[1], v[2]);
-    if (n > 0.1 && n <= 1) return {v[0] / n, v[1] / n, v[2] / n};
-  }
-}
-
-double turn_angle(std::mt19937& rng) { return 2 * std::numbers::pi * (rng() / 4294967296.0); }
 
 }  // namespace
 
