@@ -25,9 +25,9 @@
 // 1e-17 wide along the whole edge, which no rounding holds. A corner of one triangle touches
 // another when it lies within delta of the other's plane, is not one of its corners (nor at
 // the position of one), and lies in its box (widened by delta) or on an edge whose other end
-// lies within delta of the plane too; the touched triangle's group is then made flat like a layered one, and the
-// corner moves onto that plane as well (with the planes of its own groups: the line of two,
-// the point of three).
+// lies within delta of the plane too; the touched triangle's group is then made flat like a
+// layered one, and the corner moves onto that plane as well (with the planes of its own
+// groups: the line of two, the point of three).
 #pragma once
 
 #include <cstddef>
