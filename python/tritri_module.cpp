@@ -310,13 +310,7 @@ nb::dict safely_rounded_dict(Out&& out, int threads, double max_move_relative,
   }
   plain.label_sets = std::move(rounded.label_sets);
   plain.stats = out.stats;
-  plain.stats.round_passes = report.passes;
-  plain.stats.round_max_move = report.max_move;
-  plain.stats.round_max_move_rel = report.max_move_relative;
-  plain.stats.round_coarsened = report.coarsened;
-  plain.stats.round_rerouted = report.rerouted;
-  plain.stats.round_merged_input = report.merged_input;
-  plain.stats.round_snapped_vertices = report.snapped_vertices;
+  add_round_report(report, plain.stats);
   std::vector<double> v(3 * rounded.vertices.size());
   for (std::size_t i = 0; i < rounded.vertices.size(); ++i)
     for (int c = 0; c < 3; ++c) v[3 * i + c] = rounded.vertices[i][c];

@@ -121,9 +121,15 @@ TEST(RoundSafeContacts, TurnedCopiesOfAnEdgeOnAFaceSettleBySnappingContacts) {
   {
     const ArrangeResult first = arrange(rot3, ArrangeOptions{});
     ASSERT_GT(first.stats.intersecting_pairs, 0u);
-    // From the arrangement alone, no step holds the slivers 1e-17 wide along B's edge.
-    EXPECT_THROW(round_safe(first.mesh), RoundingError);
+    // From the arrangement alone, only nudging (the last resort) holds the slivers 1e-17
+    // wide along B's edge: a few vertices moved by ulps, the edge still 1e-17 off the face.
     bool nearest_ok = true;
+    const RoundReport alone = expect_safe_rounding(first.mesh, "sc2 rot3 alone", nearest_ok);
+    EXPECT_GT(alone.nudged, 0u);
+    EXPECT_LE(alone.max_move_relative, 1e-13);
+    std::printf("sc2 rot3 (sweep), the arrangement alone: %d passes, %zu vertices nudged, largest move / diagonal "
+                "%.3g\n",
+                alone.passes, alone.nudged, alone.max_move_relative);
     const RoundReport report = expect_safe_rounding(first.mesh, "sc2 rot3", nearest_ok, &rot3);
     EXPECT_FALSE(nearest_ok);
     EXPECT_GT(report.snapped_vertices, 0u);

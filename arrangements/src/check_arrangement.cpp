@@ -16,9 +16,9 @@
 #include <tritri/classify.h>
 #include <tritri/implicit_kernel.h>
 #include <tritri/projection.h>
-#include <tritri/shared_vertices.h>
 
 #include "models/exact_model.h"
+#include "support/pair_fault.h"
 
 namespace arrangements {
 namespace {
@@ -80,36 +80,23 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
   auto classify_pair = [&](int i, int j) {
     const Tri& a = F[i];
     const Tri& b = F[j];
-    int shared = 0;
-    for (int x : a) shared += std::count(b.begin(), b.end(), x) > 0;
-    if (shared == 3) {
-      report(out.violations, describe(mesh, i, j, "same three vertices"), i, j);
-      return;
-    }
-    // Neighbours that provably meet only in what they share (tritri's sufficient
-    // conditions, each proved in shared_vertices.h): in a projection first, then by plane
-    // signs; the others are classified.
-    const std::array<typename K::Point, 3> pa{P[a[0]], P[a[1]], P[a[2]]}, pb{P[b[0]], P[b[1]], P[b[2]]};
-    if (shared > 0 && (tritri::meet_in_shared_in_projection(K{}, pa, a, pb, b) ||
-                       tritri::meet_only_in_shared(K{}, pa, a, pb, b)))
-      return;
-    const tritri::Result r =
-        tritri::classify<K>(P[a[0]], P[a[1]], P[a[2]], P[b[0]], P[b[1]], P[b[2]]);
-    if (r.degenerate) return;  // reported above
-    int on_shared = 0;
-    for (const auto& p : r.points) {
-      if (p.type != tritri::Type::VA_ON_VB || a[p.id0] != b[p.id1]) {
-        report(out.violations, describe(mesh, i, j, "they meet beyond their shared vertices:" + points_of(r)), i, j);
+    tritri::Result r;
+    const PairFault fault =
+        pair_fault<K>(a, {P[a[0]], P[a[1]], P[a[2]]}, b, {P[b[0]], P[b[1]], P[b[2]]}, &r);
+    switch (fault) {
+      case PairFault::none:
+      case PairFault::degenerate:  // reported above
         return;
-      }
-      ++on_shared;
+      case PairFault::same_vertices:
+        return report(out.violations, describe(mesh, i, j, "same three vertices"), i, j);
+      case PairFault::beyond_shared:
+        return report(out.violations, describe(mesh, i, j, "they meet beyond their shared vertices:" + points_of(r)),
+                      i, j);
+      case PairFault::shared_not_reported:
+        return report(out.violations, describe(mesh, i, j, "a shared vertex is not reported"), i, j);
+      case PairFault::unexpected_segments:
+        return report(out.violations, describe(mesh, i, j, "unexpected intersection segments"), i, j);
     }
-    if (on_shared != shared) {
-      report(out.violations, describe(mesh, i, j, "a shared vertex is not reported"), i, j);
-      return;
-    }
-    if (r.segments.size() != (shared == 2 ? 1u : 0u))
-      report(out.violations, describe(mesh, i, j, "unexpected intersection segments"), i, j);
   };
   // Overlapping pairs are classified in batches as the box search finds them: the list of
   // all of them can be far larger than the mesh (52M pairs for 42K triangles).

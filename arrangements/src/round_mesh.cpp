@@ -19,6 +19,7 @@
 #include "arrangements/as_input.h"
 #include "round_merged_input.h"
 #include "round_snapped_planes.h"
+#include "round_nudged.h"
 #include "round_per_vertex.h"
 #include "round_rerouting.h"
 #include "support/bounding_box.h"
@@ -44,6 +45,7 @@ constexpr int kPassesPerLevel = 4;
 constexpr int kRerouteCycles = 8;
 constexpr int kReroutePasses = 64;  // passes and rounds of round_safe when its rerouting stops
 constexpr int kInputBudget = 32;  // passes and rounds of round_safe on each changed input
+constexpr std::size_t kNudgeMostConflicts = 256;  // nudging weighs 286 positions per corner: few conflicts only
 
 double level_spacing(double largest, int level) { return level == 0 ? 0 : grid_spacing(largest, 8 * level); }
 
@@ -259,6 +261,12 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   // within an ulp to a double vertex as the passes do, and rerouting goes on from there.
   // The bound adds each cycle's rounding move and an ulp per round of its rerouting.
   Rerouting rerouting;  // the first cycle's, for rounding per vertex below
+  // The cycle that left the fewest conflicts, for nudging at the end: its mesh, move,
+  // vertices rerouted and cycles up to it.
+  std::optional<RoundedMesh> fewest;
+  std::size_t fewest_violations = 0, fewest_rerouted = 0;
+  double fewest_move = 0;
+  int fewest_cycles = 0;
   {
     // The first cycle starts from the arrangement on its nearest doubles.
     RoundedMesh cycle_mesh{nearest_positions, mesh.triangles, mesh.source, mesh.label_set, mesh.label_sets};
@@ -278,6 +286,13 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       RoundedMesh best = mesh_on_positions(c.vertices, now.triangles, now.source, now.label_set, now.label_sets).mesh;
       const std::size_t violations = now.violations;
       if (cycle == 0) rerouting = std::move(now);
+      if (violations > 0 && (!fewest || violations < fewest_violations)) {
+        fewest = best;
+        fewest_violations = violations;
+        fewest_move = cycle_move;
+        fewest_rerouted = rerouted;
+        fewest_cycles = cycle;
+      }
       if (violations == 0) {
         r.rerouted = rerouted;
         if (auto done = settled(std::move(best), cycle_move, 0.0)) return *done;
@@ -414,6 +429,22 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       return *done;
     if (auto done = passes_at_level(level)) return *done;
   }
+  // Nudging (round_nudged.h), when every other step failed: the corners of the conflicts
+  // that rerouting's best cycle left, moved by 1 to 1024 ulps one at a time where that
+  // leaves fewer (a grazing crossing far from any vertex, which no grid holds).
+  if (fewest && fewest_violations <= kNudgeMostConflicts && r.passes < options.max_passes &&
+      fewest_move < move_limit) {
+    Nudged nudged = nudge_conflicts(*fewest, ulp, move_limit - fewest_move, options.max_passes - r.passes);
+    r.passes += nudged.rounds;
+    if (nudged.violations == 0) {
+      const RoundReport before = r;
+      r.rerouted = fewest_rerouted;
+      r.reroute_cycles = fewest_cycles;
+      r.nudged = nudged.moved;
+      if (auto done = settled(std::move(nudged.mesh), fewest_move + nudged.max_move, 0.0)) return *done;
+      r = before;
+    }
+  }
   if (report) *report = r;
   throw RoundingError(
       "round_safe: the rounded mesh is still not an arrangement (the last pass of rounding and arranging that "
@@ -424,7 +455,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       std::to_string(last.merged_vertices) +
       " vertices, removed " + std::to_string(last.removed_degenerate + last.removed_duplicate) +
       " degenerate or duplicate triangles), and neither rerouting (it stops after 3 rounds without fewer "
-      "violations) nor rounding per vertex (after two rounds without fewer conflicts, or at a grid of 2^32 ulps)" +
+      "violations) nor nudging its conflicts nor rounding per vertex (after two rounds without fewer conflicts, or at a grid of 2^32 ulps)" +
       std::string(options.input != nullptr
                       ? " nor merging input vertices (within 4 to 2^32 ulps) nor snapping nearly coplanar faces"
                       : "") +

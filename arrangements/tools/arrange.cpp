@@ -195,13 +195,7 @@ int main(int argc, char** argv) {
                            e.what());
               return 4;
             }
-            s.round_passes = report.passes;
-            s.round_max_move = report.max_move;
-            s.round_max_move_rel = report.max_move_relative;
-            s.round_coarsened = report.coarsened;
-            s.round_rerouted = report.rerouted;
-            s.round_merged_input = report.merged_input;
-            s.round_snapped_vertices = report.snapped_vertices;
+            add_round_report(report, s);
             add_write_time(s, seconds_since(tr));
           }
           if (output) {

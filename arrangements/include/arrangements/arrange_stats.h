@@ -55,6 +55,7 @@ struct ArrangeStats {
   std::size_t round_rerouted = 0;
   std::size_t round_merged_input = 0;
   std::size_t round_snapped_vertices = 0;
+  std::size_t round_nudged = 0;
 };
 
 // One row of the table.
@@ -131,7 +132,10 @@ inline constexpr auto kArrangeStats = std::make_tuple(
                "merged input arranged again (0 unless every other way failed)"),
     stat_entry("round_snapped_vertices", &ArrangeStats::round_snapped_vertices, 0,
                "--round safe: input vertices its last resort moved onto the plane of a nearly coplanar layer "
-               "or of a face they touch (exactly), the input arranged again (0 unless every other way failed)"));
+               "or of a face they touch (exactly), the input arranged again (0 unless every other way failed)"),
+    stat_entry("round_nudged", &ArrangeStats::round_nudged, 0,
+               "--round safe: vertices its last resort moved by 1 to 1024 ulps where that left fewer conflicts "
+               "(0 unless every other way failed)"));
 
 // The keys and meanings alone, in order.
 struct StatKey {

@@ -1,0 +1,178 @@
+// nudge_conflicts (round_nudged.h): moving the corners of violating pairs by 1 to 1024 steps
+// of the grid, one at a time, wherever that leaves fewer violations.
+#include "round_nudged.h"
+
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Box_intersection_d/Box_with_info_d.h>
+#include <CGAL/box_intersection_d.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <tritri/double_kernel.h>
+#include <tritri/implicit_kernel.h>
+#include <tritri/projection.h>
+
+#include "arrangements/as_input.h"
+#include "arrangements/check_arrangement.h"
+#include "support/pair_fault.h"
+#include "support/rounding_grid.h"
+
+namespace arrangements {
+namespace {
+
+using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int, CGAL::Box_intersection_d::ID_EXPLICIT>;
+constexpr int kFarthest = 1 << 10;  // steps: the positions tried are 1, 2, 4, ... steps around a corner
+
+// The 26 offsets one step around a point, times 1, 2, 4, ..., kFarthest.
+std::vector<Vec3> offsets(double step) {
+  std::vector<Vec3> out;
+  for (int m = 1; m <= kFarthest; m *= 2)
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz)
+          if (dx != 0 || dy != 0 || dz != 0) out.push_back({m * dx * step, m * dy * step, m * dz * step});
+  return out;
+}
+
+}  // namespace
+
+Nudged nudge_conflicts(const RoundedMesh& start, double step, double move_limit, int max_rounds) {
+  using K = tritri::ImplicitKernel;
+  Nudged out;
+  out.mesh = start;
+  RoundedMesh& m = out.mesh;
+  const std::size_t nv = m.vertices.size(), nt = m.triangles.size();
+  std::vector<std::vector<int>> star(nv);
+  for (std::size_t t = 0; t < nt; ++t)
+    for (int v : m.triangles[t]) star[v].push_back(static_cast<int>(t));
+  const std::vector<Vec3> offset = offsets(step);
+  // A corner moves by at most kFarthest steps per coordinate (plus half a step where the
+  // sum rounds), once per round; its triangles' neighbours are found at the round's start
+  // within twice that, as their corners may have moved too. Larger by one step: margin.
+  const double reach = 2 * (kFarthest + 1) * step;
+
+  // The corners of triangle t with vertex v at `at`.
+  auto corners = [&](int t, int v, const Vec3& at) {
+    std::array<K::Point, 3> p;
+    for (int k = 0; k < 3; ++k) {
+      const int w = m.triangles[t][k];
+      p[k] = K::Point::explicit_point(w == v ? at : m.vertices[w]);
+    }
+    return p;
+  };
+  auto has = [&](int t, int v) {
+    const Tri& f = m.triangles[t];
+    return f[0] == v || f[1] == v || f[2] == v;
+  };
+  auto overlap = [&](const std::array<Vec3, 3>& a, int u, int v, const Vec3& at) {
+    for (int k = 0; k < 3; ++k) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (int c = 0; c < 3; ++c) {
+        const int w = m.triangles[u][c];
+        const double x = w == v ? at[k] : m.vertices[w][k];
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+      }
+      if (std::max({a[0][k], a[1][k], a[2][k]}) < lo || std::min({a[0][k], a[1][k], a[2][k]}) > hi) return false;
+    }
+    return true;
+  };
+  // The violating pairs with a triangle of v's star when v is at `at`, counted up to
+  // `bound` (a count that reaches it is returned as is); SIZE_MAX when a triangle of the
+  // star is degenerate there. Pairs whose boxes do not meet do not violate.
+  auto faults_at = [&](int v, const Vec3& at, const std::vector<int>& near, std::size_t bound) {
+    std::vector<std::array<Vec3, 3>> q(star[v].size());
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const Tri& f = m.triangles[star[v][i]];
+      for (int k = 0; k < 3; ++k) q[i][k] = f[k] == v ? at : m.vertices[f[k]];
+      if (tritri::projection(tritri::DoubleKernel{}, q[i][0], q[i][1], q[i][2]).second == 0) return SIZE_MAX;
+    }
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const int t = star[v][i];
+      const auto pt = corners(t, v, at);
+      for (int u : near) {
+        if (u == t || (u < t && has(u, v)) || !overlap(q[i], u, v, at)) continue;  // each pair within the star once
+        if (pair_fault<K>(m.triangles[t], pt, m.triangles[u], corners(u, v, at)) != PairFault::none && ++n >= bound)
+          return n;
+      }
+    }
+    return n;
+  };
+
+  for (out.rounds = 1;; ++out.rounds) {
+    const std::vector<std::pair<int, int>> violating = check_arrangement(m, 0).violating_pairs;
+    out.violations = violating.size();
+    if (violating.empty() || out.rounds >= max_rounds) break;
+    std::vector<int> conflict;
+    for (const auto& [i, j] : violating)
+      for (int t : {i, j})
+        for (int v : m.triangles[t]) conflict.push_back(v);
+    std::sort(conflict.begin(), conflict.end());
+    conflict.erase(std::unique(conflict.begin(), conflict.end()), conflict.end());
+    // The triangles near each conflicting corner's star.
+    auto box_of = [&](int t, double grow) {
+      double lo[3], hi[3];
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = hi[k] = m.vertices[m.triangles[t][0]][k];
+        for (int c = 1; c < 3; ++c) {
+          lo[k] = std::min(lo[k], m.vertices[m.triangles[t][c]][k]);
+          hi[k] = std::max(hi[k], m.vertices[m.triangles[t][c]][k]);
+        }
+        lo[k] -= grow;
+        hi[k] += grow;
+      }
+      return CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+    };
+    std::vector<Box> stars, all;
+    for (std::size_t c = 0; c < conflict.size(); ++c) {
+      CGAL::Bbox_3 b;
+      for (int t : star[conflict[c]]) b += box_of(t, 2 * reach);
+      stars.emplace_back(b, static_cast<int>(c));
+    }
+    for (std::size_t t = 0; t < nt; ++t) all.emplace_back(box_of(static_cast<int>(t), 0), static_cast<int>(t));
+    std::vector<std::vector<int>> near(conflict.size());
+    CGAL::box_intersection_d<CGAL::Sequential_tag>(
+        stars.begin(), stars.end(), all.begin(), all.end(),
+        [&](const Box& s, const Box& t) { near[s.info()].push_back(t.info()); },
+        CGAL::Box_intersection_d::Box_traits_d<Box>(), 10, CGAL::Box_intersection_d::CLOSED,
+        CGAL::Box_intersection_d::BIPARTITE);
+
+    bool moved = false;
+    std::vector<std::size_t> faults(26);
+    for (std::size_t c = 0; c < conflict.size(); ++c) {
+      const int v = conflict[c];
+      const std::size_t now = faults_at(v, m.vertices[v], near[c], SIZE_MAX);
+      if (now == 0) continue;  // mended by a move before it
+      const ExactVec3 from = to_exact(start.vertices[v]);
+      // The nearest ring with a better position: the smallest move that mends most.
+      for (std::size_t ring = 0; ring < offset.size(); ring += 26) {
+        tbb::parallel_for(std::size_t{0}, std::size_t{26}, [&](std::size_t o) {
+          Vec3 at;
+          for (int k = 0; k < 3; ++k) at[k] = m.vertices[v][k] + offset[ring + o][k];
+          const bool finite = std::isfinite(at[0]) && std::isfinite(at[1]) && std::isfinite(at[2]);
+          faults[o] = !finite || distance_bound(from, at) > move_limit ? SIZE_MAX : faults_at(v, at, near[c], now);
+        });
+        const std::size_t best = std::min_element(faults.begin(), faults.end()) - faults.begin();
+        if (faults[best] >= now) continue;
+        for (int k = 0; k < 3; ++k) m.vertices[v][k] += offset[ring + best][k];
+        moved = true;
+        break;
+      }
+    }
+    if (!moved) break;
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+    if (m.vertices[v] != start.vertices[v]) {
+      ++out.moved;
+      out.max_move = std::max(out.max_move, distance_bound(to_exact(start.vertices[v]), m.vertices[v]));
+    }
+  return out;
+}
+
+}  // namespace arrangements

@@ -1,0 +1,51 @@
+// pair_fault: the rule of check_arrangement (arrangements/check_arrangement.h) for one pair of
+// triangles, shared by the check and by nudge_conflicts (round_nudged.cpp), which weighs
+// moves of one vertex by the pairs they make or mend.
+#pragma once
+
+#include <algorithm>
+#include <array>
+
+#include <tritri/classify.h>
+#include <tritri/shared_vertices.h>
+
+#include "arrangements/output_mesh.h"
+
+namespace arrangements {
+
+enum class PairFault {
+  none,                 // they meet exactly in what they share by vertex id
+  same_vertices,        // the same three vertices
+  beyond_shared,        // they meet beyond their shared vertices (result: what tritri found)
+  shared_not_reported,  // a shared vertex is not where they meet
+  unexpected_segments,  // a shared edge is not their intersection, or a vertex is a segment
+  degenerate            // one of them is degenerate (the check reports it per triangle)
+};
+
+// a, b: the triangles' vertex ids; pa, pb: their corners (kernel K). `result`, when given,
+// receives tritri's classification when one was made. Exact; one classification at most
+// (neighbours that provably meet only in what they share skip it: tritri's sufficient
+// conditions, each proved in shared_vertices.h, in a projection first, then by plane signs).
+template <class K>
+PairFault pair_fault(const Tri& a, const std::array<typename K::Point, 3>& pa, const Tri& b,
+                     const std::array<typename K::Point, 3>& pb, tritri::Result* result = nullptr) {
+  int shared = 0;
+  for (int x : a) shared += std::count(b.begin(), b.end(), x) > 0;
+  if (shared == 3) return PairFault::same_vertices;
+  if (shared > 0 &&
+      (tritri::meet_in_shared_in_projection(K{}, pa, a, pb, b) || tritri::meet_only_in_shared(K{}, pa, a, pb, b)))
+    return PairFault::none;
+  const tritri::Result r = tritri::classify<K>(pa[0], pa[1], pa[2], pb[0], pb[1], pb[2]);
+  if (result) *result = r;
+  if (r.degenerate) return PairFault::degenerate;
+  int on_shared = 0;
+  for (const auto& p : r.points) {
+    if (p.type != tritri::Type::VA_ON_VB || a[p.id0] != b[p.id1]) return PairFault::beyond_shared;
+    ++on_shared;
+  }
+  if (on_shared != shared) return PairFault::shared_not_reported;
+  if (r.segments.size() != (shared == 2 ? 1u : 0u)) return PairFault::unexpected_segments;
+  return PairFault::none;
+}
+
+}  // namespace arrangements
