@@ -45,7 +45,8 @@ constexpr int kPassesPerLevel = 4;
 constexpr int kRerouteCycles = 8;
 constexpr int kReroutePasses = 64;  // passes and rounds of round_safe when its rerouting stops
 constexpr int kInputBudget = 32;  // passes and rounds of round_safe on each changed input
-constexpr std::size_t kNudgeMostConflicts = 256;  // nudging weighs 286 positions per corner: few conflicts only
+constexpr std::size_t kNudgeMostConflicts = 1024;  // nudging weighs 286 positions per corner: few conflicts only
+constexpr int kNudgeRounds = 8;  // kept for nudging on each changed input, beyond its kInputBudget
 
 double level_spacing(double largest, int level) { return level == 0 ? 0 : grid_spacing(largest, 8 * level); }
 
@@ -166,15 +167,18 @@ bool unchanged(const ArrangeStats& s) {
 // move_cap: the largest move the caller accepts (a changed input's limit less the change's
 // own move; infinity from round_safe). Every step stops as soon as its move exceeds the
 // limit: its result would be refused (this is what makes a refusal cheap).
+// nudge_reserve: the last passes of options.max_passes kept for nudging, the last step (a
+// changed input's ladder gets its passes and these on top).
 template <class Mesh>
 RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, RoundReport* report,
-                            double move_cap) {
+                            double move_cap, int nudge_reserve) {
   if (options.max_passes < 1)
     throw std::invalid_argument("round_safe: max_passes must be at least 1, got " +
                                 std::to_string(options.max_passes));
   if (!(options.max_move_relative > 0) || !std::isfinite(options.max_move_relative))
     throw std::invalid_argument("round_safe: max_move_relative must be a finite number above 0, got " +
                                 std::to_string(options.max_move_relative));
+  const int budget = options.max_passes - std::min(nudge_reserve, options.max_passes / 2);  // before nudging
   ArrangeOptions arrange_options;
   arrange_options.threads = options.threads;
   double move = 0;
@@ -225,7 +229,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
                          again.stats.out_triangles > level_triangles + level_triangles / 10;
       last = again.stats;
       last_level = level;
-      if (worse || r.passes >= options.max_passes || (pass >= kPassesPerLevel && !no_new_points)) break;
+      if (worse || r.passes >= budget || (pass >= kPassesPerLevel && !no_new_points)) break;
       rounded = round_mesh(again.mesh, h, snap, move, move_limit - level_move);
       level_move += move;
       if (level_move > move_limit) break;
@@ -273,7 +277,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     double cycle_move = largest_distance(exact, nearest_positions);
     std::size_t rerouted = 0;
     // Rerouting stops at kReroutePasses, leaving the rest of the budget to the steps below.
-    const int reroute_limit = std::min(options.max_passes, kReroutePasses);
+    const int reroute_limit = std::min(budget, kReroutePasses);
     for (int cycle = 0; cycle < kRerouteCycles && r.passes < reroute_limit; ++cycle) {
       const RoundedMesh& c = cycle_mesh;
       Rerouting now = reroute_conflicts(c.vertices, c.triangles, c.source, c.label_set, c.label_sets, ulp,
@@ -322,11 +326,11 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     if (input_move > move_limit) return std::nullopt;
     RoundSafeOptions inner = options;
     inner.input = nullptr;
-    inner.max_passes = std::min(kInputBudget, options.max_passes - r.passes);
+    inner.max_passes = std::min(kInputBudget + kNudgeRounds, budget - r.passes);
     RoundReport done;
     try {
       RoundedMesh rounded =
-          round_in_passes(arrange(soup, arrange_options).mesh, inner, &done, move_limit - input_move);
+          round_in_passes(arrange(soup, arrange_options).mesh, inner, &done, move_limit - input_move, kNudgeRounds);
       done.passes += r.passes;
       note(done);
       const RoundReport before = r;
@@ -349,7 +353,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
                         auto count, std::size_t RoundReport::*reported) -> std::optional<RoundedMesh> {
     if (options.input == nullptr) return std::nullopt;
     std::optional<decltype(change(ulp))> ahead;  // the change at 4 times the distance, when made
-    for (int k = first; k <= last && r.passes < options.max_passes; ++k) {
+    for (int k = first; k <= last && r.passes < budget; ++k) {
       const auto changed = ahead ? std::move(*ahead) : change(std::ldexp(ulp, 2 * k));
       ahead.reset();
       if (changed.*count == moved_before) continue;
@@ -390,9 +394,9 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     return *done;
   // Level 1 (a grid of 2^8 ulps), then rounding per vertex, which moves only the vertices of
   // conflicting triangles (a far smaller change, where it settles, than the levels below).
-  if (r.passes < options.max_passes)
+  if (r.passes < budget)
     if (auto done = passes_at_level(1)) return *done;
-  if (r.passes < options.max_passes) {
+  if (r.passes < budget) {
     // Rounding per vertex from the arrangement's triangles, then from the rerouted ones
     // (within an ulp per round of rerouting of the rounded ones: extra_move).
     auto per_vertex = [&](const std::vector<Tri>& triangles, const std::vector<std::int64_t>& source,
@@ -401,7 +405,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       if (extra_move > move_limit) return std::nullopt;
       std::optional<PerVertexRounding> per =
           round_per_vertex(exact, nearest_positions, triangles, source, label_set, label_sets, largest,
-                           options.max_passes - r.passes, move_limit - extra_move);
+                           budget - r.passes, move_limit - extra_move);
       if (!per) return std::nullopt;
       r.passes += per->rounds;
       r.coarsened = per->coarsened;
@@ -423,7 +427,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   // copied vertex merges with its original, a smaller change than moving every vertex to the
   // level's grid. Merges that catch some copies only leave layers crossing as before, so
   // these distances are `stable` ones.
-  for (int level = 2; level < kLevels && r.passes < options.max_passes; ++level) {
+  for (int level = 2; level < kLevels && r.passes < budget; ++level) {
     if (auto done = input_step(4 * level - 3, 4 * level, true, merged_before, merge_within, &MergedInput::merged,
                                &RoundReport::merged_input))
       return *done;
@@ -478,11 +482,11 @@ RoundedMesh round_nearest(const ExactOutputMesh& mesh) {
 }
 
 RoundedMesh round_safe(const OutputMesh& mesh, const RoundSafeOptions& options, RoundReport* report) {
-  return round_in_passes(mesh, options, report, std::numeric_limits<double>::infinity());
+  return round_in_passes(mesh, options, report, std::numeric_limits<double>::infinity(), 0);
 }
 
 RoundedMesh round_safe(const ExactOutputMesh& mesh, const RoundSafeOptions& options, RoundReport* report) {
-  return round_in_passes(mesh, options, report, std::numeric_limits<double>::infinity());
+  return round_in_passes(mesh, options, report, std::numeric_limits<double>::infinity(), 0);
 }
 
 }  // namespace arrangements
