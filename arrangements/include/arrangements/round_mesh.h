@@ -97,9 +97,10 @@
 //   1e-7 rad crosses its original at grazing angles everywhere, and no grid holds those
 //   crossings; merged within about 1e-7 of the size (2^28 to 2^32 ulps), it coincides with
 //   its original, a smaller change than moving every vertex to that level's grid. Each
-//   changed input (every input step) gets 32 passes, rerouting at most 64 in all.
+//   changed input (every input step) gets 32 passes and 8 rounds of nudging on top,
+//   rerouting at most 64 in all.
 //   Nudging (src/round_nudged.h), the last step (also of each changed input's ladder):
-//   from rerouting's cycle with the fewest conflicts (at most 256), the corners of
+//   from rerouting's cycle with the fewest conflicts (at most 1024), the corners of
 //   violating pairs move one at a time to the position 1, 2, 4, ... 1024 ulps around them
 //   (the nearest ring that helps) that leaves the fewest violating pairs, if fewer; triangles
 //   stay. This settles a grazing crossing far from any vertex (three copies of a 10 x 21
