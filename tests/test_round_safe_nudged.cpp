@@ -41,13 +41,6 @@ RoundedMesh piercing_corner(const Vec3& o, double s) {
   return m;
 }
 
-double largest_magnitude(const RoundedMesh& m) {
-  double largest = 0;
-  for (const Vec3& p : m.vertices)
-    for (double c : p) largest = std::max(largest, std::abs(c));
-  return largest;
-}
-
 TEST(RoundSafeNudged, APiercingCornerIsMovedOutAtEveryScaleAndOffset) {
   int cases = 0;
   for (int k : {-30, -8, 0, 8, 30})
@@ -56,7 +49,7 @@ TEST(RoundSafeNudged, APiercingCornerIsMovedOutAtEveryScaleAndOffset) {
       const RoundedMesh start = piercing_corner({offset, -offset, offset}, s);
       const std::string name = "2^" + std::to_string(k) + " at " + std::to_string(offset);
       ASSERT_EQ(check_arrangement(start).violations, 1u) << name;
-      const double step = grid_spacing(largest_magnitude(start), 0);
+      const double step = grid_spacing(largest_magnitude(start.vertices), 0);
       const Nudged n = nudge_conflicts(start, step, std::numeric_limits<double>::infinity(), 16);
       EXPECT_EQ(n.violations, 0u) << name;
       EXPECT_TRUE(check_arrangement(n.mesh).ok()) << name;
@@ -75,7 +68,7 @@ TEST(RoundSafeNudged, APiercingCornerIsMovedOutAtEveryScaleAndOffset) {
 
 TEST(RoundSafeNudged, NothingMovesBeyondTheLimit) {
   const RoundedMesh start = piercing_corner({0, 0, 0}, 1.0);
-  const double step = grid_spacing(largest_magnitude(start), 0);
+  const double step = grid_spacing(largest_magnitude(start.vertices), 0);
   const Nudged none = nudge_conflicts(start, step, 0.0, 16);
   EXPECT_EQ(none.violations, 1u);
   EXPECT_EQ(none.moved, 0u);

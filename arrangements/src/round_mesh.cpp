@@ -144,13 +144,6 @@ RoundedMesh round_mesh(const Mesh& mesh, double h, double snap, double& max_move
   return out;
 }
 
-double largest_magnitude(const std::vector<Vec3>& V) {
-  double largest = 0;
-  for (const Vec3& p : V)
-    for (double c : p) largest = std::max(largest, std::abs(c));
-  return largest;
-}
-
 // x with 6 significant digits ("0.015625", "3046.9", "1e-05").
 std::string short_number(double x) {
   char text[32];

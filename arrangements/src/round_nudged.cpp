@@ -57,29 +57,24 @@ Nudged nudge_conflicts(const RoundedMesh& start, double step, double move_limit,
   const double reach = 2 * (kFarthest + 1) * step;
 
   // The corners of triangle t with vertex v at `at`.
-  auto corners = [&](int t, int v, const Vec3& at) {
-    std::array<K::Point, 3> p;
-    for (int k = 0; k < 3; ++k) {
-      const int w = m.triangles[t][k];
-      p[k] = K::Point::explicit_point(w == v ? at : m.vertices[w]);
-    }
+  auto positions = [&](int t, int v, const Vec3& at) {
+    std::array<Vec3, 3> p;
+    for (int k = 0; k < 3; ++k) p[k] = m.triangles[t][k] == v ? at : m.vertices[m.triangles[t][k]];
     return p;
+  };
+  auto explicit_points = [](const std::array<Vec3, 3>& p) {
+    return std::array<K::Point, 3>{K::Point::explicit_point(p[0]), K::Point::explicit_point(p[1]),
+                                   K::Point::explicit_point(p[2])};
   };
   auto has = [&](int t, int v) {
     const Tri& f = m.triangles[t];
     return f[0] == v || f[1] == v || f[2] == v;
   };
-  auto overlap = [&](const std::array<Vec3, 3>& a, int u, int v, const Vec3& at) {
-    for (int k = 0; k < 3; ++k) {
-      double lo = INFINITY, hi = -INFINITY;
-      for (int c = 0; c < 3; ++c) {
-        const int w = m.triangles[u][c];
-        const double x = w == v ? at[k] : m.vertices[w][k];
-        lo = std::min(lo, x);
-        hi = std::max(hi, x);
-      }
-      if (std::max({a[0][k], a[1][k], a[2][k]}) < lo || std::min({a[0][k], a[1][k], a[2][k]}) > hi) return false;
-    }
+  auto overlap = [](const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b) {
+    for (int k = 0; k < 3; ++k)
+      if (std::max({a[0][k], a[1][k], a[2][k]}) < std::min({b[0][k], b[1][k], b[2][k]}) ||
+          std::min({a[0][k], a[1][k], a[2][k]}) > std::max({b[0][k], b[1][k], b[2][k]}))
+        return false;
     return true;
   };
   // The violating pairs with a triangle of v's star when v is at `at`, counted up to
@@ -88,17 +83,18 @@ Nudged nudge_conflicts(const RoundedMesh& start, double step, double move_limit,
   auto faults_at = [&](int v, const Vec3& at, const std::vector<int>& near, std::size_t bound) {
     std::vector<std::array<Vec3, 3>> q(star[v].size());
     for (std::size_t i = 0; i < q.size(); ++i) {
-      const Tri& f = m.triangles[star[v][i]];
-      for (int k = 0; k < 3; ++k) q[i][k] = f[k] == v ? at : m.vertices[f[k]];
+      q[i] = positions(star[v][i], v, at);
       if (tritri::projection(tritri::DoubleKernel{}, q[i][0], q[i][1], q[i][2]).second == 0) return SIZE_MAX;
     }
     std::size_t n = 0;
     for (std::size_t i = 0; i < q.size(); ++i) {
       const int t = star[v][i];
-      const auto pt = corners(t, v, at);
+      const auto pt = explicit_points(q[i]);
       for (int u : near) {
-        if (u == t || (u < t && has(u, v)) || !overlap(q[i], u, v, at)) continue;  // each pair within the star once
-        if (pair_fault<K>(m.triangles[t], pt, m.triangles[u], corners(u, v, at)) != PairFault::none && ++n >= bound)
+        if (u == t || (u < t && has(u, v))) continue;  // each pair within the star once
+        const std::array<Vec3, 3> qu = positions(u, v, at);
+        if (!overlap(q[i], qu)) continue;
+        if (pair_fault<K>(m.triangles[t], pt, m.triangles[u], explicit_points(qu)) != PairFault::none && ++n >= bound)
           return n;
       }
     }

@@ -48,6 +48,14 @@ inline double distance_bound(const ExactVec3& q, const Vec3& p) {
                                    std::numeric_limits<double>::infinity());
 }
 
+// The largest coordinate magnitude of V (0 for none): the L whose ulps the grids count.
+inline double largest_magnitude(const std::vector<Vec3>& V) {
+  double largest = 0;
+  for (const Vec3& p : V)
+    for (double c : p) largest = std::max(largest, std::abs(c));
+  return largest;
+}
+
 // The largest distance_bound between exact[v] and position[v] over all v (0 for none).
 inline double largest_distance(const std::vector<ExactVec3>& exact, const std::vector<Vec3>& position) {
   std::vector<double> move(exact.size());
