@@ -4,7 +4,7 @@
 // coplanar layers snapped onto one plane (round_snapped_planes.h). Each step is tested on
 // its own (exact, transitive, bounded) and on the class of input it is for, generated
 // (rotated, turned and shifted copies) and from the shared meshes, with every check of
-// support/safe_rounding_checks.h on the result.
+// support/safe_rounding_checks.h on the result; a refusal says how close it came.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -46,7 +46,19 @@ TEST(RoundSafeInput, NearlyCoincidentCopiesMergeAtTheirInputVertices) {
   soup.label_sets = {{0}, {1}, {2}};
   const ArrangeResult first = arrange(soup, ArrangeOptions{});
   ASSERT_GT(first.stats.intersection_points, 0u);
-  EXPECT_THROW(round_safe(first.mesh), RoundingError);
+  // The refusal says how close it came: the fewest crossing pairs a last resort left, in
+  // the report and in the message.
+  RoundReport refused;
+  try {
+    round_safe(first.mesh, RoundSafeOptions{}, &refused);
+    ADD_FAILURE() << "three copies from the arrangement alone: expected RoundingError";
+  } catch (const RoundingError& error) {
+    EXPECT_GT(refused.conflicts_left, 0u);
+    EXPECT_NE(std::string(error.what()).find("the closest attempt left " + std::to_string(refused.conflicts_left) +
+                                             " pairs"),
+              std::string::npos)
+        << error.what();
+  }
 
   bool nearest_ok = true;
   RoundedMesh r;

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -21,6 +20,7 @@
 #include "round_snapped_planes.h"
 #include "round_nudged.h"
 #include "round_per_vertex.h"
+#include "round_refusal.h"
 #include "round_rerouting.h"
 #include "support/bounding_box.h"
 #include "support/cell_grid.h"
@@ -144,13 +144,6 @@ RoundedMesh round_mesh(const Mesh& mesh, double h, double snap, double& max_move
   return out;
 }
 
-// x with 6 significant digits ("0.015625", "3046.9", "1e-05").
-std::string short_number(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", x);
-  return text;
-}
-
 // True when arranging changed nothing: the mesh was an arrangement already.
 bool unchanged(const ArrangeStats& s) {
   return s.intersecting_pairs == 0 && s.merged_vertices == 0 && s.removed_degenerate == 0 &&
@@ -262,6 +255,11 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   // vertices rerouted and cycles up to it.
   std::optional<RoundedMesh> fewest;
   std::size_t fewest_violations = 0, fewest_rerouted = 0;
+  // The fewest conflicts any last resort left, here or on a changed input (for the refusal).
+  std::size_t conflicts_left = 0;
+  auto closer = [&](std::size_t left) {
+    if (left > 0 && (conflicts_left == 0 || left < conflicts_left)) conflicts_left = left;
+  };
   double fewest_move = 0;
   int fewest_cycles = 0;
   {
@@ -282,6 +280,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       if (now.rerouted > 0) cycle_move += ulp * now.rounds;
       RoundedMesh best = mesh_on_positions(c.vertices, now.triangles, now.source, now.label_set, now.label_sets).mesh;
       const std::size_t violations = now.violations;
+      closer(violations);
       if (cycle == 0) rerouting = std::move(now);
       if (violations > 0 && (!fewest || violations < fewest_violations)) {
         fewest = best;
@@ -334,6 +333,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       return std::nullopt;
     } catch (const RoundingError&) {
       r.passes += done.passes;
+      closer(done.conflicts_left);
       return std::nullopt;
     }
   };
@@ -433,6 +433,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       fewest_move < move_limit) {
     Nudged nudged = nudge_conflicts(*fewest, ulp, move_limit - fewest_move, options.max_passes - r.passes);
     r.passes += nudged.rounds;
+    closer(nudged.violations);
     if (nudged.violations == 0) {
       const RoundReport before = r;
       r.rerouted = fewest_rerouted;
@@ -442,24 +443,17 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       r = before;
     }
   }
+  r.conflicts_left = conflicts_left;
   if (report) *report = r;
-  throw RoundingError(
-      "round_safe: the rounded mesh is still not an arrangement (the last pass of rounding and arranging that "
-      "ran, " +
-      (last_level == 0 ? std::string("on the nearest doubles")
-                       : "on the grid of 2^" + std::to_string(8 * last_level) + " ulps") +
-      ", found " + std::to_string(last.intersecting_pairs) + " intersecting pairs, merged " +
-      std::to_string(last.merged_vertices) +
-      " vertices, removed " + std::to_string(last.removed_degenerate + last.removed_duplicate) +
-      " degenerate or duplicate triangles), and neither rerouting (it stops after 3 rounds without fewer "
-      "violations) nor nudging its conflicts nor rounding per vertex (after two rounds without fewer conflicts, or at a grid of 2^32 ulps)" +
-      std::string(options.input != nullptr
-                      ? " nor merging input vertices (within 4 to 2^32 ulps) nor snapping nearly coplanar faces"
-                      : "") +
-      " settled it within the move limit of " + short_number(move_limit / ulp) + " ulps (max_move_relative " +
-      short_number(options.max_move_relative) + " of the diagonal, " + short_number(diagonal / ulp) +
-      " ulps, or 16 ulps); " + std::to_string(r.passes) + " passes and rounds in all (at most " +
-      std::to_string(options.max_passes) + ")");
+  throw RoundingError(refusal_message({.conflicts_left = conflicts_left,
+                                       .last = last,
+                                       .last_level = last_level,
+                                       .input_steps = options.input != nullptr,
+                                       .move_limit_ulps = move_limit / ulp,
+                                       .max_move_relative = options.max_move_relative,
+                                       .diagonal_ulps = diagonal / ulp,
+                                       .passes = r.passes,
+                                       .max_passes = options.max_passes}));
 }
 
 }  // namespace

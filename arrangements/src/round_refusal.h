@@ -1,0 +1,62 @@
+// refusal_message: what round_safe (arrangements/round_mesh.h) says when no step settled the
+// rounding within the move limit: how close the best attempt came, what the last pass of
+// rounding and arranging found, which steps were tried, and the limits they ran under.
+#pragma once
+
+#include <cstddef>
+#include <cstdio>
+#include <string>
+
+#include "arrangements/arrange_stats.h"
+
+namespace arrangements {
+
+struct RefusalFacts {
+  std::size_t conflicts_left = 0;  // the fewest violating pairs a last resort left (0: none ran)
+  ArrangeStats last{};             // what the last pass's arrangement found
+  int last_level = 0;              // that pass's grid level (0: the nearest doubles)
+  bool input_steps = false;        // whether the input was given (merging, snapping were tried)
+  double move_limit_ulps = 0;      // the move limit, in ulps of the largest coordinate magnitude
+  double max_move_relative = 0;    // the caller's limit, as a fraction of the diagonal
+  double diagonal_ulps = 0;        // the exact arrangement's diagonal, in the same ulps
+  int passes = 0;                  // passes and rounds spent
+  int max_passes = 0;              // the caller's budget of them
+};
+
+namespace detail {
+
+// x with 6 significant digits ("0.015625", "3046.9", "1e-05").
+inline std::string short_number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
+}  // namespace detail
+
+inline std::string refusal_message(const RefusalFacts& f) {
+  using detail::short_number;
+  const std::string closest =
+      f.conflicts_left > 0 ? "the closest attempt left " + std::to_string(f.conflicts_left) +
+                                 " pairs of triangles meeting beyond their shared vertices and edges"
+                           : "no attempt came close";
+  const std::string grid = f.last_level == 0 ? std::string("the nearest doubles")
+                                             : "the grid of 2^" + std::to_string(8 * f.last_level) + " ulps";
+  return "round_safe: no rounding within the move limit keeps the mesh an arrangement (" + closest +
+         "). The last pass of rounding and arranging, on " + grid + ", found " +
+         std::to_string(f.last.intersecting_pairs) + " intersecting pairs, merged " +
+         std::to_string(f.last.merged_vertices) + " vertices and removed " +
+         std::to_string(f.last.removed_degenerate + f.last.removed_duplicate) +
+         " degenerate or duplicate triangles. Tried: rerouting (it stops after 3 rounds without fewer "
+         "violations), nudging, rounding per vertex (after two rounds without fewer conflicts, or at a grid of "
+         "2^32 ulps), coarser grids" +
+         (f.input_steps ? std::string(", merging input vertices (within 4 to 2^32 ulps), snapping nearly coplanar "
+                                      "faces")
+                        : std::string()) +
+         "; move limit " + short_number(f.move_limit_ulps) + " ulps (max_move_relative " +
+         short_number(f.max_move_relative) + " of the diagonal of " + short_number(f.diagonal_ulps) +
+         " ulps, or 16 ulps); " + std::to_string(f.passes) + " passes and rounds in all (at most " +
+         std::to_string(f.max_passes) + ")";
+}
+
+}  // namespace arrangements
