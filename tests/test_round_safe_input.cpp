@@ -173,8 +173,10 @@ TriangleSoup with_shifted_copy(TriangleSoup soup, const Vec3& axis, const Vec3& 
 
 // The shifted copy settles either by merging the input within a coarse distance (each
 // copied vertex into its original, before the level of that distance rounds every vertex
-// to its grid), or with the two layers kept apart, every vertex within a few ulps: the
-// copy's corners snapped onto nearly coplanar faces or not, what rerouting leaves nudged.
+// to its grid), or with the two layers kept apart, every vertex within 1e-12 of the diagonal
+// (a few thousand ulps at most, where nudging's cycles arranged again; the merge moves them
+// by 1e-8): the copy's corners snapped onto nearly coplanar faces or not, what rerouting
+// leaves nudged.
 // Returns whether it was the second.
 bool expect_shifted_copy_settled(const TriangleSoup& soup, const std::string& name) {
   const ArrangeResult first = arrange(soup, ArrangeOptions{});
@@ -183,7 +185,7 @@ bool expect_shifted_copy_settled(const TriangleSoup& soup, const std::string& na
   const RoundReport report = expect_safe_rounding(first.mesh, name, nearest_ok, &soup);
   EXPECT_FALSE(nearest_ok) << name;
   const bool merged = report.merged_input >= soup.vertices.size() / 2;  // every copied vertex
-  const bool kept_apart = report.merged_input == 0 && report.max_move_relative <= 1e-13;
+  const bool kept_apart = report.merged_input == 0 && report.max_move_relative <= 1e-12;
   EXPECT_TRUE(merged || kept_apart) << name << ": " << report.merged_input << " input vertices merged, move "
                                     << report.max_move_relative;
   EXPECT_LE(report.max_move_relative, 1e-6) << name;

@@ -5,18 +5,29 @@
 // with a move limit of 0 nothing moves and the violation stays. The class of what
 // nudging settles inside round_safe (grazing copies of a sphere, layers an ulp apart) is
 // in test_round_safe.cpp, test_round_safe_input.cpp and test_round_safe_contacts.cpp.
+// Nudging in cycles (round_mesh.h: where it stalls, its mesh arranged again, rerouted and
+// nudged again) on the region of a turned copy of manifold's openscad-nonmanifold-crash
+// (faces crossing at 1e-5 rad beside triangles a few thousand ulps wide), which the single
+// nudging left at 149 conflicts in the whole copy and which round_safe refused before.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <set>
 #include <string>
 #include <vector>
 
+#include "arrangements/arrange.h"
 #include "arrangements/as_input.h"
 #include "arrangements/check_arrangement.h"
+#include "arrangements/load_triangle_soup.h"
 #include "round_nudged.h"
 #include "support/rounding_grid.h"
+#include "support/safe_rounding_checks.h"
+#include "support/shared_meshes.h"
+#include "support/test_scale.h"
 
 namespace {
 
@@ -78,6 +89,86 @@ TEST(RoundSafeNudged, NothingMovesBeyondTheLimit) {
   EXPECT_EQ(once.violations, 1u);
   EXPECT_EQ(once.moved, 0u);
   EXPECT_EQ(once.rounds, 1);
+}
+
+// The mesh and a copy turned by pi about its box centre, as bench/round_safe_sweep.py makes
+// its rot2 variant (seed 1: the same axis, the same operations in the same order, so the
+// same doubles), cropped to the triangles whose boxes meet the box of the copy's triangles
+// 35, 217, 258, 260, 261 and 283 (where the conflicts were), vertices in first-index order.
+TriangleSoup turned_crash_region(const TriangleSoup& mesh) {
+  const Vec3 axis = {-0x1.f2e5f53200134p-1, -0x1.abd2510642aebp-3, 0x1.53e34acd01f7bp-4};
+  const double c = std::cos(M_PI), s = std::sin(M_PI), t = 1.0 - c;
+  const auto [x, y, z] = axis;
+  const double R[3][3] = {{c + x * x * t, x * y * t - z * s, x * z * t + y * s},
+                          {y * x * t + z * s, c + y * y * t, y * z * t - x * s},
+                          {z * x * t - y * s, z * y * t + x * s, c + z * z * t}};
+  Vec3 lo = mesh.vertices[0], hi = mesh.vertices[0];
+  for (const Vec3& p : mesh.vertices)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  Vec3 centre;
+  for (int k = 0; k < 3; ++k) centre[k] = (lo[k] + hi[k]) / 2;
+  std::vector<Vec3> V = mesh.vertices;
+  for (const Vec3& p : mesh.vertices) {
+    const Vec3 d = {p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
+    Vec3 q;
+    for (int k = 0; k < 3; ++k) q[k] = centre[k] + R[k][0] * d[0] + R[k][1] * d[1] + R[k][2] * d[2] + 0.0;
+    V.push_back(q);
+  }
+  std::vector<Tri> F = mesh.triangles;
+  const int n = static_cast<int>(mesh.vertices.size());
+  for (const Tri& f : mesh.triangles) F.push_back({f[0] + n, f[1] + n, f[2] + n});
+  const std::size_t copy = mesh.triangles.size();
+  Vec3 rlo = V[F[copy + 35][0]], rhi = rlo;
+  for (int r : {35, 217, 258, 260, 261, 283})
+    for (int v : F[copy + r])
+      for (int k = 0; k < 3; ++k) rlo[k] = std::min(rlo[k], V[v][k]), rhi[k] = std::max(rhi[k], V[v][k]);
+  std::vector<Tri> kept;
+  std::set<int> used;
+  for (const Tri& f : F) {
+    bool meets = true;
+    for (int k = 0; k < 3; ++k)
+      meets = meets && std::min({V[f[0]][k], V[f[1]][k], V[f[2]][k]}) <= rhi[k] &&
+              std::max({V[f[0]][k], V[f[1]][k], V[f[2]][k]}) >= rlo[k];
+    if (!meets) continue;
+    kept.push_back(f);
+    used.insert(f.begin(), f.end());
+  }
+  TriangleSoup out;
+  std::vector<int> index(V.size(), -1);
+  for (int v : used) {
+    index[v] = static_cast<int>(out.vertices.size());
+    out.vertices.push_back(V[v]);
+  }
+  for (const Tri& f : kept) out.triangles.push_back({index[f[0]], index[f[1]], index[f[2]]});
+  for (std::size_t i = 0; i < out.triangles.size(); ++i) out.source.push_back(static_cast<std::int64_t>(i));
+  if (!mesh.polygon.empty()) out.polygon = out.source;  // every face of the file a triangle, as arrange reads it
+  out.label_set.assign(out.triangles.size(), 0);
+  out.label_sets = {{0}};
+  return out;
+}
+
+TEST(NudgeConflicts, InCyclesSettlesTheTurnedOpenscadCrashRegion) {
+  const auto path = tritri_test::shared_meshes_dir() / "manifold_tests" / "openscad-nonmanifold-crash.obj";
+  TRITRI_REQUIRE_DATA(path);
+  // About 20 s in Release; under the sanitizers' reduced scale it would take minutes.
+  if (tritri_test::test_scale() < 0.5) GTEST_SKIP() << "the crash region runs at TRITRI_TEST_SCALE >= 0.5";
+  const TriangleSoup mesh = load_triangle_soup(path.string());
+  ASSERT_EQ(mesh.triangles.size(), 1442u);
+  const TriangleSoup region = turned_crash_region(mesh);
+  ASSERT_EQ(region.triangles.size(), 198u);
+  const ArrangeResult exact = arrange(region, ArrangeOptions{});
+  ASSERT_GT(exact.stats.intersection_points, 0u);
+  bool nearest_ok = true;
+  const RoundReport report = tritri_test::rounding::expect_safe_rounding(exact.mesh, "turned crash region",
+                                                                         nearest_ok, &region);
+  EXPECT_FALSE(nearest_ok);
+  EXPECT_GT(report.nudged, 0u);
+  EXPECT_GT(report.snapped_vertices, 0u);
+  EXPECT_LE(report.max_move_relative, 1e-12);
+  std::printf("turned crash region: %zu triangles, %d passes, %zu snapped, %zu rerouted, %zu nudged, move %.3g of the "
+              "diagonal\n",
+              region.triangles.size(), report.passes, report.snapped_vertices, report.rerouted, report.nudged,
+              report.max_move_relative);
 }
 
 }  // namespace

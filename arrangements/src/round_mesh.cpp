@@ -22,8 +22,8 @@
 #include "round_per_vertex.h"
 #include "round_refusal.h"
 #include "round_rerouting.h"
+#include "round_to_grid.h"
 #include "support/bounding_box.h"
-#include "support/cell_grid.h"
 #include "support/mesh_on_positions.h"
 #include "support/rounding_grid.h"
 #include "support/vertex_coordinates.h"
@@ -31,9 +31,8 @@
 namespace arrangements {
 namespace {
 
-// The coordinates of a vertex that is a double already (is_double): explicit points only.
-Vec3 double_coordinates(const tritri::ImplicitPoint& p) { return p.approx(); }
-Vec3 double_coordinates(const ExactVec3&) { return {}; }  // never asked
+using detail::double_coordinates;
+using detail::round_to_grid;
 
 // Rounding levels: level 0 rounds to the nearest double; level j >= 1 to the uniform grid of
 // spacing 2^(8j) units in the last place of the largest coordinate magnitude. A uniform grid,
@@ -46,103 +45,10 @@ constexpr int kRerouteCycles = 8;
 constexpr int kReroutePasses = 64;  // passes and rounds of round_safe when its rerouting stops
 constexpr int kInputBudget = 32;  // passes and rounds of round_safe on each changed input
 constexpr std::size_t kNudgeMostConflicts = 1024;  // nudging weighs 286 positions per corner: few conflicts only
-constexpr int kNudgeRounds = 8;  // kept for nudging on each changed input, beyond its kInputBudget
+constexpr int kNudgeRounds = 64;  // kept for nudging (in cycles) on each changed input, beyond its kInputBudget
+constexpr int kNudgeCycles = 8;   // nudgings, each after the last one's mesh was arranged again
 
 double level_spacing(double largest, int level) { return level == 0 ? 0 : grid_spacing(largest, 8 * level); }
-
-// The mesh with every vertex rounded to the grid of spacing h, except that a vertex that
-// is not a double and lies within `snap` of a double vertex (exact squared distance) is
-// merged into the nearest one. Triangles that collapse to an edge or a point are dropped;
-// vertices are renumbered in first-use order. `max_move` receives the largest distance a
-// vertex moved. When the double vertices alone move by more than `move_limit` (a grid too
-// coarse for the model), it stops there: an empty mesh, with max_move above the limit.
-template <class Mesh>
-RoundedMesh round_mesh(const Mesh& mesh, double h, double snap, double& max_move,
-                       double move_limit = std::numeric_limits<double>::infinity()) {
-  const std::size_t nv = mesh.vertices.size();
-  std::vector<char> fixed(nv);
-  std::vector<Vec3> position(nv);
-  std::vector<double> move(nv, 0.0);
-  // The doubles first: only a coarser grid moves them, and the rationals are needed only then.
-  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
-    fixed[v] = is_double(mesh.vertices[v]);
-    if (!fixed[v]) return;
-    const Vec3 d = double_coordinates(mesh.vertices[v]);
-    position[v] = round_point(d, h);
-    move[v] = position[v] == d ? 0.0 : distance_bound(to_exact(d), position[v]);
-  });
-  max_move = nv == 0 ? 0.0 : *std::max_element(move.begin(), move.end());
-  if (max_move > move_limit) return {};
-  std::vector<ExactVec3> exact(nv);
-  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
-    if (!fixed[v]) exact[v] = exact_coordinates(mesh.vertices[v]);
-  });
-  auto nearest_of = [&](std::size_t v) {
-    return fixed[v] ? double_coordinates(mesh.vertices[v]) : tritri::to_double(exact[v]);
-  };
-  // The nearest double vertex within `snap` of each other vertex. Candidates from a grid of
-  // cells of size 2 * snap over the double vertices: a vertex is within snap / 2 of its
-  // nearest double (snap >= an ulp of the largest magnitude), so each candidate lies in
-  // the 27 cells around it; the cell indices stay below 2^53.
-  std::vector<int> target(nv, -1);
-  if (snap > 0) {
-    detail::CellGrid grid(2 * snap);
-    for (std::size_t v = 0; v < nv; ++v)
-      if (fixed[v]) grid.add(double_coordinates(mesh.vertices[v]), static_cast<int>(v));
-    grid.finish();
-    const CGAL::Gmpq limit = CGAL::Gmpq(snap) * CGAL::Gmpq(snap);
-    tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t i) {
-      if (fixed[i]) return;
-      CGAL::Gmpq best;
-      grid.for_each_near(nearest_of(i), [&](int w_index) {
-        const Vec3 w = double_coordinates(mesh.vertices[w_index]);
-        CGAL::Gmpq d2 = 0;
-        for (int j = 0; j < 3; ++j) {
-          const CGAL::Gmpq d = exact[i][j] - CGAL::Gmpq(w[j]);
-          d2 += d * d;
-        }
-        if (d2 <= limit && (target[i] < 0 || d2 < best || (d2 == best && w_index < target[i]))) {
-          target[i] = w_index;
-          best = d2;
-        }
-      });
-    });
-  }
-  std::vector<int> representative(nv);
-  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
-    representative[v] = target[v] >= 0 ? target[v] : static_cast<int>(v);
-    if (target[v] >= 0) {
-      move[v] = distance_bound(exact[v], double_coordinates(mesh.vertices[target[v]]));
-      return;
-    }
-    if (!fixed[v]) position[v] = round_point(nearest_of(v), h);
-    for (double c : position[v])
-      if (!std::isfinite(c))
-        throw RoundingError("round: vertex " + std::to_string(v) + " rounds beyond the double range");
-    if (!fixed[v]) move[v] = distance_bound(exact[v], position[v]);
-  });
-  max_move = nv == 0 ? 0.0 : *std::max_element(move.begin(), move.end());
-
-  RoundedMesh out;
-  std::vector<int> index(nv, -1);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    Tri f;
-    for (int k = 0; k < 3; ++k) f[k] = representative[mesh.triangles[t][k]];
-    if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue;
-    for (int& i : f) {
-      if (index[i] < 0) {
-        index[i] = static_cast<int>(out.vertices.size());
-        out.vertices.push_back(position[i]);
-      }
-      i = index[i];
-    }
-    out.triangles.push_back(f);
-    out.source.push_back(mesh.source[t]);
-    out.label_set.push_back(mesh.label_set[t]);
-  }
-  out.label_sets = mesh.label_sets;
-  return out;
-}
 
 // True when arranging changed nothing: the mesh was an arrangement already.
 bool unchanged(const ArrangeStats& s) {
@@ -171,7 +77,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   RoundReport r;
   ArrangeStats last{};  // what the latest pass's arrangement found
   int last_level = 0;   // the grid level of that pass
-  const RoundedMesh nearest = round_mesh(mesh, 0, 0, move);
+  const RoundedMesh nearest = round_to_grid(mesh, 0, 0, move);
   const double largest = largest_magnitude(nearest.vertices);
   const double ulp = level_spacing(largest, 1) / 256;
   // A result that moves a vertex by more than a 64th of the arrangement's diagonal (by
@@ -197,7 +103,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     // a few hundred ulps wide, a coarse level's snap would make every double vertex a
     // candidate of every other one.
     const double snap = level == 0 ? ulp : std::max(ulp, std::min(h, move_limit));
-    RoundedMesh rounded = level == 0 ? nearest : round_mesh(mesh, h, snap, move, move_limit);
+    RoundedMesh rounded = level == 0 ? nearest : round_to_grid(mesh, h, snap, move, move_limit);
     double level_move = move;
     if (level_move > move_limit) return std::nullopt;
     const std::size_t level_triangles = rounded.triangles.size();
@@ -216,7 +122,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       last = again.stats;
       last_level = level;
       if (worse || r.passes >= budget || (pass >= kPassesPerLevel && !no_new_points)) break;
-      rounded = round_mesh(again.mesh, h, snap, move, move_limit - level_move);
+      rounded = round_to_grid(again.mesh, h, snap, move, move_limit - level_move);
       level_move += move;
       if (level_move > move_limit) break;
     }
@@ -306,7 +212,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       ++r.passes;
       ++r.reroute_cycles;
       double move_now = 0;
-      cycle_mesh = round_mesh(arrange(as_input(best), arrange_options).mesh, 0, ulp, move_now);
+      cycle_mesh = round_to_grid(arrange(as_input(best), arrange_options).mesh, 0, ulp, move_now);
       cycle_move += move_now;
     }
   }
@@ -428,19 +334,54 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   }
   // Nudging (round_nudged.h), when every other step failed: the corners of the conflicts
   // that rerouting's best cycle left, moved by 1 to 1024 ulps one at a time where that
-  // leaves fewer (a grazing crossing far from any vertex, which no grid holds).
-  if (fewest && fewest_violations <= kNudgeMostConflicts && r.passes < options.max_passes &&
-      fewest_move < move_limit) {
-    Nudged nudged = nudge_conflicts(*fewest, ulp, move_limit - fewest_move, options.max_passes - r.passes);
-    r.passes += nudged.rounds;
-    closer(nudged.violations);
-    if (nudged.violations == 0) {
+  // leaves fewer (a grazing crossing far from any vertex, which no grid holds). In cycles,
+  // as rerouting's: where nudging stalls, its mesh is arranged again (the crossings it left
+  // become points), rounded with the snap of level 0, rerouted and nudged again; each cycle
+  // adds its rounding move, an ulp per round of rerouting and its nudges to the bound.
+  if (fewest && fewest_violations <= kNudgeMostConflicts && fewest_move < move_limit) {
+    RoundedMesh start = std::move(*fewest);
+    double nudge_move = fewest_move;
+    std::size_t rerouted = fewest_rerouted, nudged_vertices = 0;
+    int cycles = fewest_cycles;
+    const std::size_t most_triangles = start.triangles.size() + start.triangles.size() / 10;
+    auto settle_nudged = [&](RoundedMesh rounded) -> std::optional<RoundedMesh> {
       const RoundReport before = r;
-      r.rerouted = fewest_rerouted;
-      r.reroute_cycles = fewest_cycles;
-      r.nudged = nudged.moved;
-      if (auto done = settled(std::move(nudged.mesh), fewest_move + nudged.max_move, 0.0)) return *done;
+      r.rerouted = rerouted;
+      r.reroute_cycles = cycles;
+      r.nudged = nudged_vertices;
+      if (auto done = settled(std::move(rounded), nudge_move, 0.0)) return done;
       r = before;
+      return std::nullopt;
+    };
+    for (int cycle = 0; cycle < kNudgeCycles && r.passes < options.max_passes && nudge_move < move_limit;
+         ++cycle) {
+      Nudged nudged = nudge_conflicts(start, ulp, move_limit - nudge_move, options.max_passes - r.passes);
+      r.passes += nudged.rounds;
+      closer(nudged.violations);
+      nudged_vertices += nudged.moved;
+      nudge_move += nudged.max_move;
+      if (nudged.violations == 0) {
+        if (auto done = settle_nudged(std::move(nudged.mesh))) return *done;
+        break;
+      }
+      if (nudged.violations > kNudgeMostConflicts || r.passes >= options.max_passes) break;
+      ++r.passes;
+      ++cycles;
+      double rounding = 0;
+      const RoundedMesh again = round_to_grid(arrange(as_input(nudged.mesh), arrange_options).mesh, 0, ulp, rounding);
+      nudge_move += rounding;
+      if (again.triangles.size() > most_triangles || nudge_move >= move_limit) break;
+      const Rerouting now = reroute_conflicts(again.vertices, again.triangles, again.source, again.label_set,
+                                              again.label_sets, ulp, options.max_passes - r.passes);
+      r.passes += now.rounds;
+      rerouted += now.rerouted;
+      if (now.rerouted > 0) nudge_move += ulp * now.rounds;
+      start = mesh_on_positions(again.vertices, now.triangles, now.source, now.label_set, now.label_sets).mesh;
+      closer(now.violations);
+      if (now.violations == 0) {
+        if (auto done = settle_nudged(std::move(start))) return *done;
+        break;
+      }
     }
   }
   r.conflicts_left = conflicts_left;
@@ -460,12 +401,12 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
 
 RoundedMesh round_nearest(const OutputMesh& mesh) {
   double move = 0;
-  return round_mesh(mesh, 0, 0, move);
+  return round_to_grid(mesh, 0, 0, move);
 }
 
 RoundedMesh round_nearest(const ExactOutputMesh& mesh) {
   double move = 0;
-  return round_mesh(mesh, 0, 0, move);
+  return round_to_grid(mesh, 0, 0, move);
 }
 
 RoundedMesh round_safe(const OutputMesh& mesh, const RoundSafeOptions& options, RoundReport* report) {

@@ -97,21 +97,27 @@
 //   1e-7 rad crosses its original at grazing angles everywhere, and no grid holds those
 //   crossings; merged within about 1e-7 of the size (2^28 to 2^32 ulps), it coincides with
 //   its original, a smaller change than moving every vertex to that level's grid. Each
-//   changed input (every input step) gets 32 passes and 8 rounds of nudging on top,
+//   changed input (every input step) gets 32 passes and 64 for nudging's cycles on top,
 //   rerouting at most 64 in all.
 //   Nudging (src/round_nudged.h), the last step (also of each changed input's ladder):
 //   from rerouting's cycle with the fewest conflicts (at most 1024), the corners of
 //   violating pairs move one at a time to the position 1, 2, 4, ... 1024 ulps around them
 //   (the nearest ring that helps) that leaves the fewest violating pairs, if fewer; triangles
 //   stay. This settles a grazing crossing far from any vertex (three copies of a 10 x 21
-//   sphere: 2 vertices moved, 1.2e-15 of the diagonal).
+//   sphere: 2 vertices moved, 1.2e-15 of the diagonal). In up to 8 cycles, as rerouting's:
+//   where nudging stalls, its mesh is arranged again (the crossings it left become points),
+//   rounded with the snap of level 0, rerouted and nudged again (stopping when the mesh
+//   grows by a tenth); each cycle adds its rounding move, an ulp per round of rerouting and
+//   its nudges to the bound. Faces crossing at 1e-5 rad beside triangles a few thousand
+//   ulps wide settle this way (a turned copy of manifold's openscad-nonmanifold-crash:
+//   785 conflicts, nudged to 149, then 8, 6, 4 and none in 4 cycles, 2.1e-13 of the diagonal).
 //   Termination: the passes have no proof (3D snap rounding with a proven bound needs a
 //   grid far coarser than doubles): at most kLevels x 4 = 20 of them. Rerouting stops
 //   after 3 rounds without fewer violations, its cycles after 8. Rounding per vertex terminates by
 //   construction (each failed round raises a bounded level of some vertex) and gives up
 //   after two rounds without fewer violations, at a vertex needing more than 2^32 ulps,
 //   or when options.max_passes (passes and rounds together) is reached. Nudging lowers
-//   the violations with every move, and stops at a round without one. What is
+//   the violations with every move, and stops at a round without one; its cycles after 8. What is
 //   measured (tests/test_round_safe.cpp: every shared mesh with intersections, MCUT and
 //   EMBER pairs, rotated copies; tests/test_round_safe_input.cpp: the input steps) is given
 //   in the tests' output.
@@ -119,12 +125,7 @@
 //   with many conflicts, more than nudging takes on (bench/round_safe_sweep.py measures
 //   how often); without options.input, also copies whose vertices coincide to 1e-7.
 //   At every level the rounded layers cross again in as many places, their conflicts are
-//   not within an ulp of a feature, and coarsening them only spreads them. The sweep's
-//   case: a turned copy of manifold's openscad-nonmanifold-crash, whose faces cross at
-//   1e-5 to 1e-4 rad next to triangles a few thousand ulps wide (OpenSCAD's 2e-10
-//   tolerance): the plane snap takes the conflicts to 785, nudging to 149, all around five
-//   input triangles, and neither snapping those planes within 4^8 to 4^18 ulps nor a
-//   move limit of the whole diagonal settles it. Also models of
+//   not within an ulp of a feature, and coarsening them only spreads them. Also models of
 //   thousands of triangles only a few thousand ulps wide (features of tens of ulps: a mesh
 //   scaled by 2^-30 and moved to 1e6), which no step rounds within the default move limit:
 //   they settle with moves of a fifth to two thirds of the diagonal, which a caller may
