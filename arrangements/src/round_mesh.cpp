@@ -60,7 +60,7 @@ bool unchanged(const ArrangeStats& s) {
 // own move; infinity from round_safe). Every step stops as soon as its move exceeds the
 // limit: its result would be refused (this is what makes a refusal cheap).
 // nudge_reserve: the last passes of options.max_passes kept for nudging, the last step (a
-// changed input's ladder gets its passes and these on top).
+// changed input's ladder gets its passes and these on top); below options.max_passes.
 template <class Mesh>
 RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, RoundReport* report,
                             double move_cap, int nudge_reserve) {
@@ -70,7 +70,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   if (!(options.max_move_relative > 0) || !std::isfinite(options.max_move_relative))
     throw std::invalid_argument("round_safe: max_move_relative must be a finite number above 0, got " +
                                 std::to_string(options.max_move_relative));
-  const int budget = options.max_passes - std::min(nudge_reserve, options.max_passes / 2);  // before nudging
+  const int budget = options.max_passes - nudge_reserve;  // before nudging
   ArrangeOptions arrange_options;
   arrange_options.threads = options.threads;
   double move = 0;
@@ -224,11 +224,13 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     if (input_move > move_limit) return std::nullopt;
     RoundSafeOptions inner = options;
     inner.input = nullptr;
+    // kInputBudget passes, then kNudgeRounds for nudging's cycles, within what is left.
     inner.max_passes = std::min(kInputBudget + kNudgeRounds, budget - r.passes);
+    const int reserve = std::max(0, inner.max_passes - kInputBudget);
     RoundReport done;
     try {
       RoundedMesh rounded =
-          round_in_passes(arrange(soup, arrange_options).mesh, inner, &done, move_limit - input_move, kNudgeRounds);
+          round_in_passes(arrange(soup, arrange_options).mesh, inner, &done, move_limit - input_move, reserve);
       done.passes += r.passes;
       note(done);
       const RoundReport before = r;
