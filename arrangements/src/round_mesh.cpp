@@ -366,7 +366,8 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
         if (auto done = settle_nudged(std::move(nudged.mesh))) return *done;
         break;
       }
-      if (nudged.violations > kNudgeMostConflicts || r.passes >= options.max_passes) break;
+      // Arranging again is a pass, and rerouting needs a round after it.
+      if (nudged.violations > kNudgeMostConflicts || r.passes + 1 >= options.max_passes) break;
       ++r.passes;
       ++cycles;
       double rounding = 0;
