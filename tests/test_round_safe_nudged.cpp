@@ -11,10 +11,12 @@
 // nudging left at 149 conflicts in the whole copy and which round_safe refused before.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <numbers>
 #include <set>
 #include <string>
 #include <vector>
@@ -24,6 +26,8 @@
 #include "arrangements/check_arrangement.h"
 #include "arrangements/load_triangle_soup.h"
 #include "round_nudged.h"
+#include "support/bounding_box.h"
+#include "support/mesh_generators.h"
 #include "support/rounding_grid.h"
 #include "support/safe_rounding_checks.h"
 #include "support/shared_meshes.h"
@@ -96,17 +100,10 @@ TEST(RoundSafeNudged, NothingMovesBeyondTheLimit) {
 // same doubles), cropped to the triangles whose boxes meet the box of the copy's triangles
 // 35, 217, 258, 260, 261 and 283 (where the conflicts were), vertices in first-index order.
 TriangleSoup turned_crash_region(const TriangleSoup& mesh) {
-  const Vec3 axis = {-0x1.f2e5f53200134p-1, -0x1.abd2510642aebp-3, 0x1.53e34acd01f7bp-4};
-  const double c = std::cos(M_PI), s = std::sin(M_PI), t = 1.0 - c;
-  const auto [x, y, z] = axis;
-  const double R[3][3] = {{c + x * x * t, x * y * t - z * s, x * z * t + y * s},
-                          {y * x * t + z * s, c + y * y * t, y * z * t - x * s},
-                          {z * x * t - y * s, z * y * t + x * s, c + z * z * t}};
-  Vec3 lo = mesh.vertices[0], hi = mesh.vertices[0];
-  for (const Vec3& p : mesh.vertices)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  Vec3 centre;
-  for (int k = 0; k < 3; ++k) centre[k] = (lo[k] + hi[k]) / 2;
+  // The sweep adds the centre first (turned adds it last: other doubles).
+  const RotationMatrix R =
+      rotation_matrix({-0x1.f2e5f53200134p-1, -0x1.abd2510642aebp-3, 0x1.53e34acd01f7bp-4}, std::numbers::pi);
+  const Vec3 centre = bounding_box(mesh.vertices).centre();
   std::vector<Vec3> V = mesh.vertices;
   for (const Vec3& p : mesh.vertices) {
     const Vec3 d = {p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};

@@ -90,12 +90,16 @@ TriangleSoup rotated_copies(const TriangleSoup& soup, int k) {
   return s;
 }
 
-TriangleSoup turned(TriangleSoup soup, const Vec3& centre, const Vec3& axis, double angle, const Vec3& shift) {
+RotationMatrix rotation_matrix(const Vec3& axis, double angle) {
   const double c = std::cos(angle), s = std::sin(angle), t = 1 - c;
   const double x = axis[0], y = axis[1], z = axis[2];
-  const double R[3][3] = {{c + x * x * t, x * y * t - z * s, x * z * t + y * s},
-                          {y * x * t + z * s, c + y * y * t, y * z * t - x * s},
-                          {z * x * t - y * s, z * y * t + x * s, c + z * z * t}};
+  return {{{c + x * x * t, x * y * t - z * s, x * z * t + y * s},
+           {y * x * t + z * s, c + y * y * t, y * z * t - x * s},
+           {z * x * t - y * s, z * y * t + x * s, c + z * z * t}}};
+}
+
+TriangleSoup turned(TriangleSoup soup, const Vec3& centre, const Vec3& axis, double angle, const Vec3& shift) {
+  const RotationMatrix R = rotation_matrix(axis, angle);
   for (Vec3& v : soup.vertices) {
     const Vec3 d{v[0] - centre[0], v[1] - centre[1], v[2] - centre[2]};
     for (int i = 0; i < 3; ++i) v[i] = R[i][0] * d[0] + R[i][1] * d[1] + R[i][2] * d[2] + centre[i] + shift[i];
