@@ -44,9 +44,20 @@ constexpr int kPassesPerLevel = 4;
 constexpr int kRerouteCycles = 8;
 constexpr int kReroutePasses = 64;  // passes and rounds of round_safe when its rerouting stops
 constexpr int kInputBudget = 32;  // passes and rounds of round_safe on each changed input
-constexpr std::size_t kNudgeMostConflicts = 1024;  // nudging weighs 286 positions per corner: few conflicts only
 constexpr int kNudgeRounds = 64;  // kept for nudging (in cycles) on each changed input, beyond its kInputBudget
 constexpr int kNudgeCycles = 8;   // nudgings, each after the last one's mesh was arranged again
+
+// Conflicts few enough to arrange again (rerouting's and nudging's cycles): on at most a
+// 20th of the triangles. Where they are more (layers that nearly coincide over whole
+// faces), arranging again makes as many new ones.
+bool few_conflicts(std::size_t violations, std::size_t triangles) { return violations <= triangles / 20; }
+
+// Conflicts nudging takes on: few, or up to kNudgeAnyMesh on a small mesh. Nudging weighs
+// 286 positions per corner; on more it would take minutes to leave as many.
+constexpr std::size_t kNudgeAnyMesh = 1024;
+bool nudgeable(std::size_t violations, std::size_t triangles) {
+  return violations <= kNudgeAnyMesh || few_conflicts(violations, triangles);
+}
 
 double level_spacing(double largest, int level) { return level == 0 ? 0 : grid_spacing(largest, 8 * level); }
 
@@ -61,9 +72,12 @@ bool unchanged(const ArrangeStats& s) {
 // limit: its result would be refused (this is what makes a refusal cheap).
 // nudge_reserve: the last passes of options.max_passes kept for nudging, the last step (a
 // changed input's ladder gets its passes and these on top); below options.max_passes.
+// levels: the grid levels tried (kLevels; a changed input's ladder stops after level 1:
+// the coarser ones move every vertex by 2^16 ulps or more, far more than the change, and
+// the ladder above tries them itself, each after merging the input at its scale).
 template <class Mesh>
 RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, RoundReport* report,
-                            double move_cap, int nudge_reserve) {
+                            double move_cap, int nudge_reserve, int levels) {
   if (options.max_passes < 1)
     throw std::invalid_argument("round_safe: max_passes must be at least 1, got " +
                                 std::to_string(options.max_passes));
@@ -206,7 +220,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
       // makes as many new ones; a cycle that grows the mesh by more than a tenth feeds on
       // itself the same way.
       const std::size_t triangles = best.triangles.size();
-      if (violations > triangles / 20 || triangles > mesh.triangles.size() + mesh.triangles.size() / 10 ||
+      if (!few_conflicts(violations, triangles) || triangles > mesh.triangles.size() + mesh.triangles.size() / 10 ||
           r.passes >= reroute_limit || cycle_move > move_limit)
         break;
       ++r.passes;
@@ -230,7 +244,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     RoundReport done;
     try {
       RoundedMesh rounded =
-          round_in_passes(arrange(soup, arrange_options).mesh, inner, &done, move_limit - input_move, reserve);
+          round_in_passes(arrange(soup, arrange_options).mesh, inner, &done, move_limit - input_move, reserve, 2);
       done.passes += r.passes;
       note(done);
       const RoundReport before = r;
@@ -295,7 +309,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
     return *done;
   // Level 1 (a grid of 2^8 ulps), then rounding per vertex, which moves only the vertices of
   // conflicting triangles (a far smaller change, where it settles, than the levels below).
-  if (r.passes < budget)
+  if (r.passes < budget && levels > 1)
     if (auto done = passes_at_level(1)) return *done;
   if (r.passes < budget) {
     // Rounding per vertex from the arrangement's triangles, then from the rerouted ones
@@ -328,7 +342,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   // copied vertex merges with its original, a smaller change than moving every vertex to the
   // level's grid. Merges that catch some copies only leave layers crossing as before, so
   // these distances are `stable` ones.
-  for (int level = 2; level < kLevels && r.passes < budget; ++level) {
+  for (int level = 2; level < levels && r.passes < budget; ++level) {
     if (auto done = input_step(4 * level - 3, 4 * level, true, merged_before, merge_within, &MergedInput::merged,
                                &RoundReport::merged_input))
       return *done;
@@ -340,7 +354,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
   // as rerouting's: where nudging stalls, its mesh is arranged again (the crossings it left
   // become points), rounded with the snap of level 0, rerouted and nudged again; each cycle
   // adds its rounding move, an ulp per round of rerouting and its nudges to the bound.
-  if (fewest && fewest_violations <= kNudgeMostConflicts && fewest_move < move_limit) {
+  if (fewest && nudgeable(fewest_violations, fewest->triangles.size()) && fewest_move < move_limit) {
     RoundedMesh start = std::move(*fewest);
     double nudge_move = fewest_move;
     std::size_t rerouted = fewest_rerouted, nudged_vertices = 0;
@@ -367,7 +381,7 @@ RoundedMesh round_in_passes(const Mesh& mesh, const RoundSafeOptions& options, R
         break;
       }
       // Arranging again is a pass, and rerouting needs a round after it.
-      if (nudged.violations > kNudgeMostConflicts || r.passes + 1 >= options.max_passes) break;
+      if (!nudgeable(nudged.violations, nudged.mesh.triangles.size()) || r.passes + 1 >= options.max_passes) break;
       ++r.passes;
       ++cycles;
       double rounding = 0;
@@ -413,11 +427,11 @@ RoundedMesh round_nearest(const ExactOutputMesh& mesh) {
 }
 
 RoundedMesh round_safe(const OutputMesh& mesh, const RoundSafeOptions& options, RoundReport* report) {
-  return round_in_passes(mesh, options, report, std::numeric_limits<double>::infinity(), 0);
+  return round_in_passes(mesh, options, report, std::numeric_limits<double>::infinity(), 0, kLevels);
 }
 
 RoundedMesh round_safe(const ExactOutputMesh& mesh, const RoundSafeOptions& options, RoundReport* report) {
-  return round_in_passes(mesh, options, report, std::numeric_limits<double>::infinity(), 0);
+  return round_in_passes(mesh, options, report, std::numeric_limits<double>::infinity(), 0, kLevels);
 }
 
 }  // namespace arrangements
