@@ -77,25 +77,41 @@ Nudged nudge_conflicts(const RoundedMesh& start, double step, double move_limit,
         return false;
     return true;
   };
-  // The violating pairs with a triangle of v's star when v is at `at`, counted up to
-  // `bound` (a count that reaches it is returned as is); SIZE_MAX when a triangle of the
-  // star is degenerate there. Pairs whose boxes do not meet do not violate.
-  auto faults_at = [&](int v, const Vec3& at, const std::vector<int>& near, std::size_t bound) {
+  // The pairs of a triangle of v's star (its index in star[v]) with a triangle near it,
+  // each once.
+  struct StarPair {
+    int i, u;
+  };
+  auto star_pairs = [&](int v, const std::vector<int>& near) {
+    std::vector<StarPair> pairs;
+    for (std::size_t i = 0; i < star[v].size(); ++i) {
+      const int t = star[v][i];
+      for (int u : near)
+        if (u != t && !(u < t && has(u, v))) pairs.push_back({static_cast<int>(i), u});
+    }
+    return pairs;
+  };
+  // The violating pairs among `pairs` when v is at `at`, counted up to `bound` (a count that
+  // reaches it is returned as is), in the order given; SIZE_MAX when a triangle of the star
+  // is degenerate there. Pairs whose boxes do not meet do not violate. `faulty`, when given,
+  // receives which pairs violate.
+  auto faults_at = [&](int v, const Vec3& at, const std::vector<StarPair>& pairs, std::size_t bound,
+                       std::vector<char>* faulty) {
     std::vector<std::array<Vec3, 3>> q(star[v].size());
+    std::vector<std::array<K::Point, 3>> pq(q.size());
     for (std::size_t i = 0; i < q.size(); ++i) {
       q[i] = positions(star[v][i], v, at);
       if (tritri::projection(tritri::DoubleKernel{}, q[i][0], q[i][1], q[i][2]).second == 0) return SIZE_MAX;
+      pq[i] = explicit_points(q[i]);
     }
     std::size_t n = 0;
-    for (std::size_t i = 0; i < q.size(); ++i) {
-      const int t = star[v][i];
-      const auto pt = explicit_points(q[i]);
-      for (int u : near) {
-        if (u == t || (u < t && has(u, v))) continue;  // each pair within the star once
-        const std::array<Vec3, 3> qu = positions(u, v, at);
-        if (!overlap(q[i], qu)) continue;
-        if (pair_fault<K>(m.triangles[t], pt, m.triangles[u], explicit_points(qu)) != PairFault::none && ++n >= bound)
-          return n;
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const auto [i, u] = pairs[k];
+      const std::array<Vec3, 3> qu = positions(u, v, at);
+      if (!overlap(q[i], qu)) continue;
+      if (pair_fault<K>(m.triangles[star[v][i]], pq[i], m.triangles[u], explicit_points(qu)) != PairFault::none) {
+        if (faulty) (*faulty)[k] = 1;
+        if (++n >= bound) return n;
       }
     }
     return n;
@@ -143,8 +159,18 @@ Nudged nudge_conflicts(const RoundedMesh& start, double step, double move_limit,
     std::vector<std::size_t> faults(26);
     for (std::size_t c = 0; c < conflict.size(); ++c) {
       const int v = conflict[c];
-      const std::size_t now = faults_at(v, m.vertices[v], near[c], SIZE_MAX);
+      std::vector<StarPair> pairs = star_pairs(v, near[c]);
+      std::vector<char> faulty(pairs.size());
+      const std::size_t now = faults_at(v, m.vertices[v], pairs, SIZE_MAX, &faulty);
       if (now == 0) continue;  // mended by a move before it
+      // The violating pairs first: where a position leaves them as they are (most do), its
+      // count reaches `now` after them and stops (the counts, capped at `now`, are the same
+      // in any order).
+      std::vector<StarPair> ordered;
+      ordered.reserve(pairs.size());
+      for (int first : {1, 0})
+        for (std::size_t k = 0; k < pairs.size(); ++k)
+          if (faulty[k] == first) ordered.push_back(pairs[k]);
       const ExactVec3 from = to_exact(start.vertices[v]);
       // The nearest ring with a better position: the smallest move that mends most.
       for (std::size_t ring = 0; ring < offset.size(); ring += 26) {
@@ -152,7 +178,7 @@ Nudged nudge_conflicts(const RoundedMesh& start, double step, double move_limit,
           Vec3 at;
           for (int k = 0; k < 3; ++k) at[k] = m.vertices[v][k] + offset[ring + o][k];
           const bool finite = std::isfinite(at[0]) && std::isfinite(at[1]) && std::isfinite(at[2]);
-          faults[o] = !finite || distance_bound(from, at) > move_limit ? SIZE_MAX : faults_at(v, at, near[c], now);
+          faults[o] = !finite || distance_bound(from, at) > move_limit ? SIZE_MAX : faults_at(v, at, ordered, now, nullptr);
         });
         const std::size_t best = std::min_element(faults.begin(), faults.end()) - faults.begin();
         if (faults[best] >= now) continue;
