@@ -1,6 +1,6 @@
 // round_to_grid: one rounding of a mesh (an arrangement, exact or implicit, or a rounded
 // mesh arranged again) to a grid, with snap rounding's rule for new points; the step that
-// round_safe's passes (round_mesh.cpp) and cycles repeat.
+// round_safe's passes (round_ladder.h) and cycles repeat.
 #pragma once
 
 #include <tbb/parallel_for.h>

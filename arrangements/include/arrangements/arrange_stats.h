@@ -134,8 +134,8 @@ inline constexpr auto kArrangeStats = std::make_tuple(
                "--round safe: input vertices its last resort moved onto the plane of a nearly coplanar layer "
                "or of a face they touch (exactly), the input arranged again (0 unless every other way failed)"),
     stat_entry("round_nudged", &ArrangeStats::round_nudged, 0,
-               "--round safe: vertices its last resort moved by 1 to 1024 ulps where that left fewer conflicts "
-               "(0 unless every other way failed)"));
+               "--round safe: moves of vertices by 1 to 1024 ulps where that left fewer conflicts, its last "
+               "resort, summed over that step's cycles (0 unless every other way failed)"));
 
 // The keys and meanings alone, in order.
 struct StatKey {

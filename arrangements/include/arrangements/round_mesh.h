@@ -98,9 +98,11 @@
 //   crossings; merged within about 1e-7 of the size (2^28 to 2^32 ulps), it coincides with
 //   its original, a smaller change than moving every vertex to that level's grid. Each
 //   changed input (every input step) gets 32 passes and 64 for nudging's cycles on top,
-//   rerouting at most 64 in all.
+//   rerouting at most 64 in all, and stops after level 1 (the coarser levels move every
+//   vertex far more than the change; this ladder tries them itself).
 //   Nudging (src/round_nudged.h), the last step (also of each changed input's ladder):
-//   from rerouting's cycle with the fewest conflicts (at most 1024), the corners of
+//   from rerouting's cycle with the fewest conflicts (at most 1024, or on up to a 20th of
+//   the triangles: as for arranging again in the cycles), the corners of
 //   violating pairs move one at a time to the position 1, 2, 4, ... 1024 ulps around them
 //   (the nearest ring that helps) that leaves the fewest violating pairs, if fewer; triangles
 //   stay. This settles a grazing crossing far from any vertex (three copies of a 10 x 21
@@ -188,8 +190,9 @@ struct RoundReport {
                                      // options.input too)
   int reroute_cycles = 0;           // rerouted meshes arranged again (coplanar layers
                                     // then merge, one source for their area)
-  std::size_t nudged = 0;           // vertices the last resort of nudging moved (by 1 to
-                                    // 1024 ulps, from the rerouted mesh)
+  std::size_t nudged = 0;           // moves of vertices by the last resort of nudging (by
+                                    // 1 to 1024 ulps, from the rerouted mesh), summed over
+                                    // its cycles: a vertex nudged in two counts twice
   std::size_t conflicts_left = 0;   // when refused (RoundingError): the fewest pairs of
                                     // triangles meeting beyond what they share (violating
                                     // pairs) that rerouting or nudging left,

@@ -1,0 +1,486 @@
+// Ladder (arrangements::detail): the steps of round_safe (arrangements/round_mesh.h, where
+// they are documented) in the order they are tried, each on the exact arrangement, the
+// first result that is an arrangement within the move limit returned. round_mesh.cpp runs
+// one; each changed input runs one of its own.
+#pragma once
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <tritri/implicit_point.h>
+
+#include "arrangements/arrange.h"
+#include "arrangements/as_input.h"
+#include "arrangements/round_mesh.h"
+#include "round_merged_input.h"
+#include "round_snapped_planes.h"
+#include "round_nudged.h"
+#include "round_per_vertex.h"
+#include "round_refusal.h"
+#include "round_rerouting.h"
+#include "round_to_grid.h"
+#include "support/bounding_box.h"
+#include "support/mesh_on_positions.h"
+#include "support/rounding_grid.h"
+#include "support/vertex_coordinates.h"
+
+namespace arrangements::detail {
+
+// Rounding levels: level 0 rounds to the nearest double; level j >= 1 to the uniform grid of
+// spacing 2^(8j) units in the last place of the largest coordinate magnitude. A uniform grid,
+// unlike the doubles, is as coarse near zero as anywhere: features thinner than a cell (a
+// sliver, two surfaces 1e-33 apart near a zero coordinate) collapse instead of crossing
+// again after every pass.
+constexpr int kLevels = 5;
+constexpr int kPassesPerLevel = 4;
+constexpr int kRerouteCycles = 8;
+constexpr int kReroutePasses = 64;  // passes and rounds of round_safe when its rerouting stops
+constexpr int kInputBudget = 32;  // passes and rounds of round_safe on each changed input
+constexpr int kNudgeRounds = 64;  // kept for nudging (in cycles) on each changed input, beyond its kInputBudget
+constexpr int kNudgeCycles = 8;   // nudgings, each after the last one's mesh was arranged again
+
+// Conflicts few enough to arrange again (rerouting's and nudging's cycles): on at most a
+// 20th of the triangles. Where they are more (layers that nearly coincide over whole
+// faces), arranging again makes as many new ones.
+inline bool few_conflicts(std::size_t violations, std::size_t triangles) { return violations <= triangles / 20; }
+
+// Conflicts nudging takes on: few, or up to kNudgeAnyMesh on a small mesh. Nudging weighs
+// 286 positions per corner; on more it would take minutes to leave as many.
+constexpr std::size_t kNudgeAnyMesh = 1024;
+inline bool nudgeable(std::size_t violations, std::size_t triangles) {
+  return violations <= kNudgeAnyMesh || few_conflicts(violations, triangles);
+}
+
+inline double level_spacing(double largest, int level) { return level == 0 ? 0 : grid_spacing(largest, 8 * level); }
+
+// True when arranging changed nothing: the mesh was an arrangement already.
+inline bool unchanged(const ArrangeStats& s) {
+  return s.intersecting_pairs == 0 && s.merged_vertices == 0 && s.removed_degenerate == 0 &&
+         s.removed_duplicate == 0 && s.out_vertices == s.in_vertices && s.out_triangles == s.in_triangles;
+}
+
+// One ladder of round_safe: its steps, each tried when the ones before it failed (the
+// smallest change first), on `mesh`; run() returns the first result that is an
+// arrangement within the move limit, or throws RoundingError. A changed input's ladder
+// (settle_input) is one more Ladder, on the arrangement of the changed input.
+// move_cap: the largest move the caller accepts (a changed input's limit less the change's
+// own move; infinity from round_safe). Every step stops as soon as its move exceeds the
+// limit: its result would be refused (this is what makes a refusal cheap).
+// nudge_reserve: the last passes of options.max_passes kept for nudging, the last step (a
+// changed input's ladder gets its passes and these on top); below options.max_passes.
+// levels: the grid levels tried (kLevels; a changed input's ladder stops after level 1:
+// the coarser ones move every vertex by 2^16 ulps or more, far more than the change, and
+// the ladder above tries them itself, each after merging the input at its scale).
+template <class Mesh>
+class Ladder {
+ public:
+  Ladder(const Mesh& mesh, const RoundSafeOptions& options, double move_cap, int nudge_reserve, int levels)
+      : mesh_(mesh), options_(options), levels_(levels) {
+    if (options.max_passes < 1)
+      throw std::invalid_argument("round_safe: max_passes must be at least 1, got " +
+                                  std::to_string(options.max_passes));
+    if (!(options.max_move_relative > 0) || !std::isfinite(options.max_move_relative))
+      throw std::invalid_argument("round_safe: max_move_relative must be a finite number above 0, got " +
+                                  std::to_string(options.max_move_relative));
+    budget_ = options.max_passes - nudge_reserve;
+    arrange_options_.threads = options.threads;
+    nearest_ = round_to_grid(mesh, 0, 0, nearest_move_);
+    largest_ = largest_magnitude(nearest_.vertices);
+    ulp_ = level_spacing(largest_, 1) / 256;
+    // A result that moves a vertex by more than a 64th of the arrangement's diagonal (by
+    // default: options.max_move_relative) is not a rounding of it (a grid or merge distance
+    // as wide as the model collapses it, to nothing at worst): every step's result is
+    // refused beyond that, and the next step tried. A model only a few ulps wide may move
+    // by 16 ulps (rounding to nearest moves it by one), but not vanish.
+    diagonal_ = bounding_box(nearest_.vertices).diagonal();
+    move_limit_ = std::min(std::max(diagonal_ * options.max_move_relative, 16 * ulp_), move_cap);
+  }
+
+  RoundedMesh run(RoundReport* report) {
+    report_ = report;
+    if (auto done = passes_at_level(0)) return *done;
+    // The last resorts make few or no new points: vertices stay at their nearest doubles
+    // while slivers collapse and edges and faces are rerouted through vertices within an
+    // ulp (round_rerouting.h), tried before the coarser levels because it moves the surface
+    // by an ulp per round only; what that leaves, after the coarser levels, vertices on
+    // grids of their own, coarser only where needed (round_per_vertex.h). Arranging the
+    // result once more proves it.
+    find_exact_and_nearest();
+    if (auto done = reroute_in_cycles()) return *done;
+    // Merged input (round_merged_input.h): its vertices within 4, 16, 64, then 256 ulps of
+    // each other merged (a move of a few ulps where copies of one mesh nearly coincide,
+    // before the coarser grids move every vertex by 2^8 ulps or more).
+    if (auto done = input_step(1, 4, false, merged_before_, &Ladder::merge_within, &MergedInput::merged,
+                               &RoundReport::merged_input))
+      return *done;
+    // Snapped planes (round_snapped_planes.h): layers within 4, 16, then 64 ulps of each
+    // other's planes made coplanar (exact rationals), for faces that nearly coincide
+    // without sharing vertices. Then contacts as well: corners within 4, 16, then 64 ulps
+    // of the plane of a triangle they touch moved onto it (an edge on a face that a turn
+    // left 1e-17 off it).
+    if (auto done = input_step(1, 3, false, snapped_before_, &Ladder::snap_layers_within, &SnappedPlanes::moved,
+                               &RoundReport::snapped_vertices))
+      return *done;
+    if (auto done = input_step(1, 3, false, snapped_before_, &Ladder::snap_contacts_within,
+                               &SnappedPlanes::moved, &RoundReport::snapped_vertices))
+      return *done;
+    // Level 1 (a grid of 2^8 ulps), then rounding per vertex, which moves only the vertices
+    // of conflicting triangles (a far smaller change, where it settles, than the levels
+    // below).
+    if (r_.passes < budget_ && levels_ > 1)
+      if (auto done = passes_at_level(1)) return *done;
+    if (auto done = round_each_vertex()) return *done;
+    // The coarser levels, each after merging the input within its spacing: copies of one
+    // mesh moved and turned by far more than ulps (1e-9 of the size, 1e-7 rad) coincide once
+    // every copied vertex merges with its original, a smaller change than moving every
+    // vertex to the level's grid. Merges that catch some copies only leave layers crossing
+    // as before, so these distances are `stable` ones.
+    for (int level = 2; level < levels_ && r_.passes < budget_; ++level) {
+      if (auto done = input_step(4 * level - 3, 4 * level, true, merged_before_, &Ladder::merge_within,
+                                 &MergedInput::merged, &RoundReport::merged_input))
+        return *done;
+      if (auto done = passes_at_level(level)) return *done;
+    }
+    if (auto done = nudge_in_cycles()) return *done;
+    refuse();
+  }
+
+ private:
+  using Found = std::optional<RoundedMesh>;
+
+  // The result, with the report filled, when within the move limit and not emptied.
+  Found finish(RoundedMesh rounded, double max_move, double grid) {
+    if (max_move > move_limit_ || (rounded.triangles.empty() && !mesh_.triangles.empty())) return std::nullopt;
+    r_.grid = grid;
+    r_.max_move = max_move;
+    r_.max_move_relative = diagonal_ > 0 ? r_.max_move / diagonal_ : 0.0;
+    if (report_) *report_ = r_;
+    return rounded;
+  }
+
+  // A last resort's result, proven once more by arranging it.
+  Found settled(RoundedMesh rounded, double max_move, double grid) {
+    if (!unchanged(arrange(as_input(rounded), arrange_options_).stats))
+      throw RoundingError("round_safe: a last resort passed the check but arranging its result changed it");
+    return finish(std::move(rounded), max_move, grid);
+  }
+
+  // The fewest conflicts any last resort left, here or on a changed input (for the refusal).
+  void closer(std::size_t left) {
+    if (left > 0 && (conflicts_left_ == 0 || left < conflicts_left_)) conflicts_left_ = left;
+  }
+
+  // The passes of one level; the rounded mesh when one of them settles it.
+  Found passes_at_level(int level) {
+    // Each level starts again from the exact arrangement.
+    const double h = level_spacing(largest_, level);
+    // No vertex snaps farther than the move limit (the result would be refused): on a model
+    // a few hundred ulps wide, a coarse level's snap would make every double vertex a
+    // candidate of every other one.
+    const double snap = level == 0 ? ulp_ : std::max(ulp_, std::min(h, move_limit_));
+    double move = nearest_move_;
+    RoundedMesh rounded = level == 0 ? nearest_ : round_to_grid(mesh_, h, snap, move, move_limit_);
+    double level_move = move;
+    if (level_move > move_limit_) return std::nullopt;
+    const std::size_t level_triangles = rounded.triangles.size();
+    for (int pass = 1;; ++pass) {
+      ++r_.passes;
+      ArrangeResult again = arrange(as_input(rounded), arrange_options_);
+      if (unchanged(again.stats)) return finish(std::move(rounded), level_move, h);
+      // A pass that does not reduce the intersections, or grows the mesh by more than a
+      // tenth, means this grid keeps making features it cannot hold: go to the next level
+      // (before the passes grow the mesh without bound). A pass that finds none, only
+      // vertices to merge or triangles to drop (copies collapsed onto one grid), makes no
+      // new point and shrinks the mesh: the next one may settle, even after the level's 4.
+      const bool no_new_points = again.stats.intersecting_pairs == 0;
+      const bool worse = (pass > 1 && !no_new_points && again.stats.intersecting_pairs >= last_.intersecting_pairs) ||
+                         again.stats.out_triangles > level_triangles + level_triangles / 10;
+      last_ = again.stats;
+      last_level_ = level;
+      if (worse || r_.passes >= budget_ || (pass >= kPassesPerLevel && !no_new_points)) break;
+      rounded = round_to_grid(again.mesh, h, snap, move, move_limit_ - level_move);
+      level_move += move;
+      if (level_move > move_limit_) break;
+    }
+    return std::nullopt;
+  }
+
+  // Every vertex of the exact arrangement, and its nearest double.
+  void find_exact_and_nearest() {
+    exact_.resize(mesh_.vertices.size());
+    nearest_positions_.resize(exact_.size());
+    tbb::parallel_for(std::size_t{0}, exact_.size(), [&](std::size_t v) {
+      if (is_double(mesh_.vertices[v])) {
+        nearest_positions_[v] = double_coordinates(mesh_.vertices[v]);
+        exact_[v] = to_exact(nearest_positions_[v]);
+      } else {
+        exact_[v] = exact_coordinates(mesh_.vertices[v]);
+        nearest_positions_[v] = tritri::to_double(exact_[v]);
+      }
+    });
+  }
+
+  // The step the cycles of rerouting and of nudging share: `m` arranged again (a pass; the
+  // crossings its rounding left become points) and rounded to nearest, new points within
+  // an ulp snapped to a double vertex as the passes do; `move` receives the rounding's.
+  RoundedMesh arrange_and_round(const RoundedMesh& m, double& move) {
+    ++r_.passes;
+    return round_to_grid(arrange(as_input(m), arrange_options_).mesh, 0, ulp_, move);
+  }
+
+  // Rerouting of `m` (round_rerouting.h) within max_rounds, and its best mesh.
+  struct Rerouted {
+    Rerouting rerouting;
+    RoundedMesh mesh;
+  };
+  Rerouted reroute(const RoundedMesh& m, int max_rounds) {
+    Rerouting now = reroute_conflicts(m.vertices, m.triangles, m.source, m.label_set, m.label_sets, ulp_, max_rounds);
+    r_.passes += now.rounds;
+    RoundedMesh best = mesh_on_positions(m.vertices, now.triangles, now.source, now.label_set, now.label_sets).mesh;
+    return {std::move(now), std::move(best)};
+  }
+
+  // Rerouting, in cycles: when one stalls, its best mesh is arranged again and rounded
+  // (arrange_and_round), and rerouting goes on from there. The bound adds each cycle's
+  // rounding move and an ulp per round of its rerouting. Keeps the first cycle's rerouting
+  // (for rounding per vertex) and the cycle that left the fewest conflicts (for nudging).
+  Found reroute_in_cycles() {
+    // The first cycle starts from the arrangement on its nearest doubles.
+    RoundedMesh cycle_mesh{nearest_positions_, mesh_.triangles, mesh_.source, mesh_.label_set, mesh_.label_sets};
+    double cycle_move = largest_distance(exact_, nearest_positions_);
+    std::size_t rerouted = 0;
+    // Rerouting stops at kReroutePasses, leaving the rest of the budget to the steps below.
+    const int reroute_limit = std::min(budget_, kReroutePasses);
+    for (int cycle = 0; cycle < kRerouteCycles && r_.passes < reroute_limit; ++cycle) {
+      Rerouted now = reroute(cycle_mesh, reroute_limit - r_.passes);
+      rerouted += now.rerouting.rerouted;
+      // Each round of rerouting moves the surface by an ulp at most (a vertex put on an
+      // edge or a face lies within an ulp of it): rounds x ulp bounds the cycle's move.
+      if (now.rerouting.rerouted > 0) cycle_move += ulp_ * now.rerouting.rounds;
+      const std::size_t violations = now.rerouting.violations;
+      closer(violations);
+      if (violations > 0 && (!fewest_ || violations < fewest_violations_)) {
+        fewest_ = now.mesh;
+        fewest_violations_ = violations;
+        fewest_move_ = cycle_move;
+        fewest_rerouted_ = rerouted;
+        fewest_cycles_ = cycle;
+      }
+      const std::size_t triangles = now.mesh.triangles.size();
+      RoundedMesh best = std::move(now.mesh);
+      if (cycle == 0) first_rerouting_ = std::move(now.rerouting);
+      if (violations == 0) {
+        r_.rerouted = rerouted;
+        if (auto done = settled(std::move(best), cycle_move, 0.0)) return done;
+        r_.rerouted = 0;
+        return std::nullopt;
+      }
+      // Arranging again pays only for few conflicts; a cycle that grows the mesh by more
+      // than a tenth feeds on itself.
+      if (!few_conflicts(violations, triangles) || triangles > mesh_.triangles.size() + mesh_.triangles.size() / 10 ||
+          r_.passes >= reroute_limit || cycle_move > move_limit_)
+        return std::nullopt;
+      ++r_.reroute_cycles;
+      double move_now = 0;
+      cycle_mesh = arrange_and_round(best, move_now);
+      cycle_move += move_now;
+    }
+    return std::nullopt;
+  }
+
+  // Back to the input, when given: a changed input (double or exact soup) arranged and
+  // rounded safely by a ladder of its own (without the input steps or the coarser levels),
+  // within kInputBudget passes (a change that does not settle soon is not the right one);
+  // `note` records the change in the report. The bound adds the input's largest move.
+  template <class Soup, class Note>
+  Found settle_input(const Soup& soup, double input_move, Note note) {
+    if (input_move > move_limit_) return std::nullopt;
+    RoundSafeOptions inner = options_;
+    inner.input = nullptr;
+    // kInputBudget passes, then kNudgeRounds for nudging's cycles, within what is left.
+    inner.max_passes = std::min(kInputBudget + kNudgeRounds, budget_ - r_.passes);
+    const int reserve = std::max(0, inner.max_passes - kInputBudget);
+    RoundReport done;
+    try {
+      const auto arranged = arrange(soup, arrange_options_);
+      RoundedMesh rounded = Ladder<std::decay_t<decltype(arranged.mesh)>>(arranged.mesh, inner,
+                                                                          move_limit_ - input_move, reserve, 2)
+                                .run(&done);
+      done.passes += r_.passes;
+      note(done);
+      const RoundReport before = r_;
+      r_ = done;
+      if (auto result = finish(std::move(rounded), input_move + done.max_move, done.grid)) return result;
+      r_ = before;  // refused by the move limit: nothing of it stays in the report but its passes
+      r_.passes = done.passes;
+      return std::nullopt;
+    } catch (const RoundingError&) {
+      r_.passes += done.passes;
+      closer(done.conflicts_left);
+      return std::nullopt;
+    }
+  }
+
+  MergedInput merge_within(double delta) const { return merge_close_input_vertices(*options_.input, delta); }
+  SnappedPlanes snap_layers_within(double delta) const {
+    return snap_near_coplanar_faces(*options_.input, delta, options_.threads, false);
+  }
+  SnappedPlanes snap_contacts_within(double delta) const {
+    return snap_near_coplanar_faces(*options_.input, delta, options_.threads, true);
+  }
+
+  // One input step: the input changed within 4^k ulps for k = first..last (`change`, whose
+  // result counts the vertices it moved in `count`) and settled as above. A distance that
+  // moves no more vertices than the last one tried (`moved_before`) is not tried again;
+  // with `stable`, neither is one where 4 times the distance would move more than a 16th
+  // more vertices (a scale inside the clusters, not between them: copies not all caught).
+  template <class Changed>
+  Found input_step(int first, int last, bool stable, std::size_t& moved_before, Changed (Ladder::*change)(double) const,
+                   std::size_t Changed::*count, std::size_t RoundReport::*reported) {
+    if (options_.input == nullptr) return std::nullopt;
+    std::optional<Changed> ahead;  // the change at 4 times the distance, when made
+    for (int k = first; k <= last && r_.passes < budget_; ++k) {
+      const Changed changed = ahead ? std::move(*ahead) : (this->*change)(std::ldexp(ulp_, 2 * k));
+      ahead.reset();
+      if (changed.*count == moved_before) continue;
+      if (stable) {
+        ahead = (this->*change)(std::ldexp(ulp_, 2 * k + 2));
+        if ((*ahead).*count > changed.*count + changed.*count / 16) continue;
+      }
+      moved_before = changed.*count;
+      auto note = [&](RoundReport& d) { d.*reported = changed.*count; };
+      if (auto done = settle_input(changed.soup, changed.max_move, note)) return done;
+    }
+    return std::nullopt;
+  }
+
+  // Rounding per vertex from the arrangement's triangles, then from the first cycle's
+  // rerouted ones (within an ulp per round of rerouting of the rounded ones: extra_move).
+  Found round_each_vertex() {
+    if (r_.passes >= budget_) return std::nullopt;
+    auto from = [&](const std::vector<Tri>& triangles, const std::vector<std::int64_t>& source,
+                    const std::vector<int>& label_set, const std::vector<LabelSet>& label_sets,
+                    double extra_move) -> Found {
+      if (extra_move > move_limit_) return std::nullopt;
+      std::optional<PerVertexRounding> per =
+          round_per_vertex(exact_, nearest_positions_, triangles, source, label_set, label_sets, largest_,
+                           budget_ - r_.passes, move_limit_ - extra_move);
+      if (!per) return std::nullopt;
+      r_.passes += per->rounds;
+      r_.coarsened = per->coarsened;
+      if (auto done = settled(per->mesh, per->max_move + extra_move, per->grid)) return done;
+      r_.coarsened = 0;
+      return std::nullopt;
+    };
+    if (auto done = from(mesh_.triangles, mesh_.source, mesh_.label_set, mesh_.label_sets, 0.0)) return done;
+    const Rerouting& first = first_rerouting_;
+    if (first.rerouted > 0) {
+      r_.rerouted = first.rerouted;
+      if (auto done = from(first.triangles, first.source, first.label_set, first.label_sets, ulp_ * first.rounds))
+        return done;
+      r_.rerouted = 0;
+    }
+    return std::nullopt;
+  }
+
+  // Nudging (round_nudged.h), when every other step failed: the corners of the conflicts
+  // that rerouting's best cycle left, moved by 1 to 1024 ulps one at a time where that
+  // leaves fewer (a grazing crossing far from any vertex, which no grid holds). In cycles,
+  // as rerouting's: where nudging stalls, its mesh is arranged again and rounded
+  // (arrange_and_round), rerouted and nudged again; each cycle adds its rounding move, an
+  // ulp per round of rerouting and its nudges to the bound.
+  Found nudge_in_cycles() {
+    if (!fewest_ || !nudgeable(fewest_violations_, fewest_->triangles.size()) || fewest_move_ >= move_limit_)
+      return std::nullopt;
+    RoundedMesh start = std::move(*fewest_);
+    double nudge_move = fewest_move_;
+    std::size_t rerouted = fewest_rerouted_, nudged_vertices = 0;
+    int cycles = fewest_cycles_;
+    const std::size_t most_triangles = start.triangles.size() + start.triangles.size() / 10;
+    auto settle_nudged = [&](RoundedMesh rounded) -> Found {
+      const RoundReport before = r_;
+      r_.rerouted = rerouted;
+      r_.reroute_cycles = cycles;
+      r_.nudged = nudged_vertices;
+      if (auto done = settled(std::move(rounded), nudge_move, 0.0)) return done;
+      r_ = before;
+      return std::nullopt;
+    };
+    const int max_passes = options_.max_passes;
+    for (int cycle = 0; cycle < kNudgeCycles && r_.passes < max_passes && nudge_move < move_limit_; ++cycle) {
+      Nudged nudged = nudge_conflicts(start, ulp_, move_limit_ - nudge_move, max_passes - r_.passes);
+      r_.passes += nudged.rounds;
+      closer(nudged.violations);
+      nudged_vertices += nudged.moved;
+      nudge_move += nudged.max_move;
+      if (nudged.violations == 0) return settle_nudged(std::move(nudged.mesh));
+      // Arranging again is a pass, and rerouting needs a round after it.
+      if (!nudgeable(nudged.violations, nudged.mesh.triangles.size()) || r_.passes + 1 >= max_passes)
+        return std::nullopt;
+      ++cycles;
+      double rounding = 0;
+      const RoundedMesh again = arrange_and_round(nudged.mesh, rounding);
+      nudge_move += rounding;
+      if (again.triangles.size() > most_triangles || nudge_move >= move_limit_) return std::nullopt;
+      Rerouted now = reroute(again, max_passes - r_.passes);
+      rerouted += now.rerouting.rerouted;
+      if (now.rerouting.rerouted > 0) nudge_move += ulp_ * now.rerouting.rounds;
+      start = std::move(now.mesh);
+      closer(now.rerouting.violations);
+      if (now.rerouting.violations == 0) return settle_nudged(std::move(start));
+    }
+    return std::nullopt;
+  }
+
+  [[noreturn]] void refuse() {
+    r_.conflicts_left = conflicts_left_;
+    if (report_) *report_ = r_;
+    throw RoundingError(refusal_message({.conflicts_left = conflicts_left_,
+                                         .last = last_,
+                                         .last_level = last_level_,
+                                         .input_steps = options_.input != nullptr,
+                                         .move_limit_ulps = move_limit_ / ulp_,
+                                         .max_move_relative = options_.max_move_relative,
+                                         .diagonal_ulps = diagonal_ / ulp_,
+                                         .passes = r_.passes,
+                                         .max_passes = options_.max_passes}));
+  }
+
+  const Mesh& mesh_;
+  const RoundSafeOptions& options_;
+  const int levels_;
+  int budget_ = 0;  // passes and rounds before nudging
+  ArrangeOptions arrange_options_;
+  RoundReport r_;
+  RoundReport* report_ = nullptr;
+  RoundedMesh nearest_;        // the arrangement rounded to nearest
+  double nearest_move_ = 0;    // and that rounding's largest move
+  double largest_ = 0;         // largest coordinate magnitude of nearest_
+  double ulp_ = 0;             // an ulp of largest_
+  double diagonal_ = 0;        // of nearest_'s bounding box
+  double move_limit_ = 0;
+  ArrangeStats last_{};        // what the latest pass's arrangement found
+  int last_level_ = 0;         // the grid level of that pass
+  std::vector<ExactVec3> exact_;        // the arrangement's vertices (for the last resorts)
+  std::vector<Vec3> nearest_positions_;  // and their nearest doubles
+  Rerouting first_rerouting_;           // rerouting's first cycle, for rounding per vertex
+  // Rerouting's cycle that left the fewest conflicts, for nudging: its mesh, the
+  // conflicts, its move, the vertices rerouted and the cycles up to it.
+  std::optional<RoundedMesh> fewest_;
+  std::size_t fewest_violations_ = 0, fewest_rerouted_ = 0;
+  double fewest_move_ = 0;
+  int fewest_cycles_ = 0;
+  std::size_t conflicts_left_ = 0;  // the fewest conflicts any last resort left
+  std::size_t merged_before_ = 0, snapped_before_ = 0;  // vertices the last input change moved
+};
+
+}  // namespace arrangements::detail
