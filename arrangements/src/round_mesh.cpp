@@ -27,7 +27,8 @@ RoundedMesh round_safe(const OutputMesh& mesh, const RoundSafeOptions& options, 
 }
 
 RoundedMesh round_safe(const ExactOutputMesh& mesh, const RoundSafeOptions& options, RoundReport* report) {
-  return Ladder<ExactOutputMesh>(mesh, options, std::numeric_limits<double>::infinity(), 0, detail::kLevels).run(report);
+  return Ladder<ExactOutputMesh>(mesh, options, std::numeric_limits<double>::infinity(), 0, detail::kLevels)
+      .run(report);
 }
 
 }  // namespace arrangements

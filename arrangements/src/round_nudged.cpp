@@ -178,7 +178,8 @@ Nudged nudge_conflicts(const RoundedMesh& start, double step, double move_limit,
           Vec3 at;
           for (int k = 0; k < 3; ++k) at[k] = m.vertices[v][k] + offset[ring + o][k];
           const bool finite = std::isfinite(at[0]) && std::isfinite(at[1]) && std::isfinite(at[2]);
-          faults[o] = !finite || distance_bound(from, at) > move_limit ? SIZE_MAX : faults_at(v, at, ordered, now, nullptr);
+          faults[o] = !finite || distance_bound(from, at) > move_limit ? SIZE_MAX
+                                                                       : faults_at(v, at, ordered, now, nullptr);
         });
         const std::size_t best = std::min_element(faults.begin(), faults.end()) - faults.begin();
         if (faults[best] >= now) continue;

@@ -18,7 +18,8 @@
 // Cost per round: one check of the mesh (check_arrangement), one box search of the
 // violating corners' triangles against all, then per corner and ring tried 26 x (pairs of
 // the corner's triangles with neighbours whose boxes meet) classifications at most (a
-// count stops where it reaches the current one). Meant for few conflicts (round_safe calls
+// count stops where it reaches the current one; the corner's violating pairs are counted
+// first, so a position that leaves them violating stops after them). Meant for few conflicts (round_safe calls
 // it on at most 1024, or on a 20th of the triangles where that is more).
 #pragma once
 
