@@ -47,6 +47,7 @@ constexpr int kReroutePasses = 64;  // passes and rounds of round_safe when its 
 constexpr int kInputBudget = 32;  // passes and rounds of round_safe on each changed input
 constexpr int kNudgeRounds = 64;  // kept for nudging (in cycles) on each changed input, beyond its kInputBudget
 constexpr int kNudgeCycles = 8;   // nudgings, each after the last one's mesh was arranged again
+constexpr int kChangedInputLevels = 2;  // a changed input's ladder: levels 0 and 1 (see Ladder)
 
 // Conflicts few enough to arrange again (rerouting's and nudging's cycles): on at most a
 // 20th of the triangles. Where they are more (layers that nearly coincide over whole
@@ -108,6 +109,7 @@ class Ladder {
   RoundedMesh run(RoundReport* report) {
     report_ = report;
     if (auto done = passes_at_level(0)) return *done;
+    std::size_t merged_before = 0, snapped_before = 0;  // vertices the last input change moved
     // The last resorts make few or no new points: vertices stay at their nearest doubles
     // while slivers collapse and edges and faces are rerouted through vertices within an
     // ulp (round_rerouting.h), tried before the coarser levels because it moves the surface
@@ -119,7 +121,7 @@ class Ladder {
     // Merged input (round_merged_input.h): its vertices within 4, 16, 64, then 256 ulps of
     // each other merged (a move of a few ulps where copies of one mesh nearly coincide,
     // before the coarser grids move every vertex by 2^8 ulps or more).
-    if (auto done = input_step(1, 4, false, merged_before_, &Ladder::merge_within, &MergedInput::merged,
+    if (auto done = input_step(1, 4, false, merged_before, &Ladder::merge_within, &MergedInput::merged,
                                &RoundReport::merged_input))
       return *done;
     // Snapped planes (round_snapped_planes.h): layers within 4, 16, then 64 ulps of each
@@ -127,10 +129,10 @@ class Ladder {
     // without sharing vertices. Then contacts as well: corners within 4, 16, then 64 ulps
     // of the plane of a triangle they touch moved onto it (an edge on a face that a turn
     // left 1e-17 off it).
-    if (auto done = input_step(1, 3, false, snapped_before_, &Ladder::snap_layers_within, &SnappedPlanes::moved,
+    if (auto done = input_step(1, 3, false, snapped_before, &Ladder::snap_layers_within, &SnappedPlanes::moved,
                                &RoundReport::snapped_vertices))
       return *done;
-    if (auto done = input_step(1, 3, false, snapped_before_, &Ladder::snap_contacts_within,
+    if (auto done = input_step(1, 3, false, snapped_before, &Ladder::snap_contacts_within,
                                &SnappedPlanes::moved, &RoundReport::snapped_vertices))
       return *done;
     // Level 1 (a grid of 2^8 ulps), then rounding per vertex, which moves only the vertices
@@ -145,7 +147,7 @@ class Ladder {
     // vertex to the level's grid. Merges that catch some copies only leave layers crossing
     // as before, so these distances are `stable` ones.
     for (int level = 2; level < levels_ && r_.passes < budget_; ++level) {
-      if (auto done = input_step(4 * level - 3, 4 * level, true, merged_before_, &Ladder::merge_within,
+      if (auto done = input_step(4 * level - 3, 4 * level, true, merged_before, &Ladder::merge_within,
                                  &MergedInput::merged, &RoundReport::merged_input))
         return *done;
       if (auto done = passes_at_level(level)) return *done;
@@ -313,7 +315,8 @@ class Ladder {
     try {
       const auto arranged = arrange(soup, arrange_options_);
       RoundedMesh rounded = Ladder<std::decay_t<decltype(arranged.mesh)>>(arranged.mesh, inner,
-                                                                          move_limit_ - input_move, reserve, 2)
+                                                                          move_limit_ - input_move, reserve,
+                                                                          kChangedInputLevels)
                                 .run(&done);
       done.passes += r_.passes;
       note(done);
@@ -480,7 +483,6 @@ class Ladder {
   double fewest_move_ = 0;
   int fewest_cycles_ = 0;
   std::size_t conflicts_left_ = 0;  // the fewest conflicts any last resort left
-  std::size_t merged_before_ = 0, snapped_before_ = 0;  // vertices the last input change moved
 };
 
 }  // namespace arrangements::detail
