@@ -9,7 +9,8 @@ Workloads (always the same, in this order): the shared models thingi10k/40509.st
 trimesh/box.STL and common3d/ogre.obj (relative to --meshes); the generated meshes
 coplanar_grids, two_spheres, grid_through_sphere, sphere_copies_4 and sphere_copies_8
 (make_test_meshes, found beside --arrange); the EMBER pairs ember-79741-65004,
-ember-88566-58011 and ember-1063852-72214 (../tools/make_ember_pairs.py beside --meshes).
+ember-88566-58011 and ember-1063852-72214 (../tools/make_ember_pairs.py beside --meshes); QuickCSG's TwoCylinders (the two .off files
+of thingicsg/QuickCSG/TwoCylinders under --meshes, caps overlapping in common planes).
 Generated meshes and EMBER pairs are built once into --work and reused from there.
 
 Every workload runs `arrange FILES --stats --threads T` for each T of --threads, --runs
@@ -56,7 +57,8 @@ WORKLOADS = [("thingi10k/40509.stl", "shared"), ("trimesh/box.STL", "shared"),
              ("two_spheres", "generated"), ("grid_through_sphere", "generated"),
              ("sphere_copies_4", "generated"), ("sphere_copies_8", "generated"),
              ("ember-79741-65004", "ember"), ("ember-88566-58011", "ember"),
-             ("ember-1063852-72214", "ember")]
+             ("ember-1063852-72214", "ember"),
+             ("thingicsg/QuickCSG/TwoCylinders", "shared-folder")]
 
 
 class Missing(Exception):
@@ -119,6 +121,11 @@ def prepare(name, kind, args):
     except OSError as e:
         raise Missing(f"cannot build it in {args.work}: {e}") from e
     f = args.meshes / name
+    if kind == "shared-folder":  # every mesh of the folder, in name order, as one input
+        files = sorted(p for p in f.glob("*.off")) if f.is_dir() else []
+        if not files:
+            raise Missing(f"{f}: no .off files")
+        return files
     if not f.is_file():
         raise Missing(f"{f}: no such file")
     return [f]

@@ -60,7 +60,7 @@ VENV=$ROOT/build-python/venv
 "$VENV/bin/python" -m pip install -q matplotlib pytest
 "$VENV/bin/python" -m pytest -q -p no:cacheprovider tests/python/test_run_collection.py tests/python/test_report.py \
   tests/python/test_script_args.py tests/python/test_compare_upstream.py \
-  tests/python/test_round_safe_sweep.py
+  tests/python/test_round_safe_sweep.py tests/python/test_coplanar_bench.py
 meshes=$(mktemp -d)
 build/bin/make_test_meshes "$meshes/default"
 "$VENV/bin/python" bench/run_collection.py "$meshes/default" --out "$meshes/results.jsonl" --tool build/bin/tritri-compare

@@ -9,6 +9,8 @@
 // were before the model existed.
 #pragma once
 
+#include <optional>
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -77,6 +79,10 @@ struct DoubleModel {
   static tritri::Sign side_of_plane(const PlaneCache& f, const Vertex& a, const Vertex& b, const Vertex& c,
                                     const Vertex& d) {
     return tritri::side_of_plane(f, a, b, c, d);
+  }
+  // The same sign when the cached plane's filter alone certifies it (a: the first corner).
+  static std::optional<tritri::Sign> certified_side_of_plane(const PlaneCache& f, const Vertex& a, const Vertex& d) {
+    return f.certified_side(a, d);
   }
 
   // Stages 4 and 5: points.

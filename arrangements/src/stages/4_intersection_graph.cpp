@@ -1,5 +1,6 @@
 #include "stages/4_intersection_graph.h"
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
@@ -178,11 +179,29 @@ struct Additions {
 // Exactness: point location is orient2d on implicit points (a certified filter, then
 // tritri's filtered exact predicates) in a projection where t is not degenerate. Cost:
 // one location per distinct point of t's coplanar partners (points on an edge two
-// partners share, and segment ends, are located once), most of them settled by boxes.
+// partners share, and segment ends, are located once; a per-thread stamp per point
+// dedups them without a sort), most of them settled by boxes computed once per point.
+// Memory: a box per point and 6 bytes per point per thread, only when coplanar pairs exist.
 template <class M>
 void share_coplanar(const std::vector<typename M::Vertex>& V, const std::vector<Tri>& F,
                     BasicIntersectionGraph<typename M::Point>& g) {
   std::vector<Additions> add(F.size());
+  // Per thread, per point: the triangle that last listed it, and what was found there.
+  struct Scratch {
+    std::vector<int> seen;
+    std::vector<char> is_point, inside_closed;
+    std::vector<int> ids;
+    void resize(std::size_t n) {
+      seen.assign(n, -1);
+      is_point.assign(n, 0);
+      inside_closed.assign(n, 0);
+    }
+  };
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  // Every point's certified box, once (a point is listed by every triangle whose partner
+  // holds it).
+  std::vector<typename M::Box> boxes(g.points.size());
+  tbb::parallel_for(std::size_t{0}, g.points.size(), [&](std::size_t x) { boxes[x] = M::box(g.points[x]); });
   tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
     if (g.coplanar_partners[t].empty()) return;
     const Tri& tri = F[t];
@@ -201,42 +220,47 @@ void share_coplanar(const std::vector<typename M::Vertex>& V, const std::vector<
         hi[c] = std::max(hi[c], h[c]);
       }
     }
-    // The points to locate: (id, 1 if it is one of a partner's points, 0 if only a
-    // segment end, such as a partner's corner), each id once.
-    std::vector<std::pair<int, int>> ids;
+    // The points to locate, each id once (stamped with t in this thread's scratch, no
+    // sort: a triangle of a fan crossing another fan has tens of partners holding
+    // thousands of ids); whether it is one of a partner's points, or only a segment end
+    // (such as a partner's corner).
+    Scratch& sc = scratch.local();
+    if (sc.seen.empty()) sc.resize(g.points.size());
+    sc.ids.clear();
+    auto visit = [&](int x, bool point) {
+      if (sc.seen[x] != static_cast<int>(t)) {
+        sc.seen[x] = static_cast<int>(t);
+        sc.is_point[x] = point;
+        sc.ids.push_back(x);
+      } else if (point) {
+        sc.is_point[x] = 1;
+      }
+    };
     for (int u : g.coplanar_partners[t]) {
-      for (int x : g.triangle_points[u]) ids.emplace_back(x, 1);
+      for (int x : g.triangle_points[u]) visit(x, true);
       for (int k = 0; k < 3; ++k)
-        for (int x : g.edge_points[g.triangle_edges[u][k]]) ids.emplace_back(x, 1);
-      for (const auto& s : g.triangle_segments[u]) ids.insert(ids.end(), {{s[0], 0}, {s[1], 0}});
+        for (int x : g.edge_points[g.triangle_edges[u][k]]) visit(x, true);
+      for (const auto& s : g.triangle_segments[u]) {
+        visit(s[0], false);
+        visit(s[1], false);
+      }
     }
-    std::sort(ids.begin(), ids.end(), [](const auto& l, const auto& r) {
-      return l.first != r.first ? l.first < r.first : l.second > r.second;  // a partner's point first
-    });
-    ids.erase(std::unique(ids.begin(), ids.end(), [](const auto& l, const auto& r) { return l.first == r.first; }),
-              ids.end());
-    std::vector<Location> where(ids.size());
-    for (std::size_t i = 0; i < ids.size(); ++i) {
-      const int x = ids[i].first;
+    for (int x : sc.ids) {
       // A box around the point disjoint from t's box: outside, with no predicate.
-      const typename M::Box b = M::box(g.points[x]);
+      const typename M::Box& b = boxes[x];
       bool apart = false;
       for (int c = 0; c < 3; ++c) apart = apart || b[c].hi < lo[c] || b[c].lo > hi[c];
-      where[i] = apart ? Location::outside() : locate<M>(V, g.points, tri, plane, orientation, x, b);
-      if (!ids[i].second) continue;
-      if (where[i].kind == Location::Interior)
+      const Location where = apart ? Location::outside() : locate<M>(V, g.points, tri, plane, orientation, x, b);
+      sc.inside_closed[x] = where.kind != Location::Outside;
+      if (!sc.is_point[x]) continue;
+      if (where.kind == Location::Interior)
         a.inside.push_back(x);
-      else if (where[i].kind == Location::Edge)
-        a.on_edge.push_back({g.triangle_edges[t][where[i].id], x});
+      else if (where.kind == Location::Edge)
+        a.on_edge.push_back({g.triangle_edges[t][where.id], x});
     }
-    auto inside_closed = [&](int x) {
-      const auto it =
-          std::lower_bound(ids.begin(), ids.end(), x, [](const std::pair<int, int>& l, int r) { return l.first < r; });
-      return where[static_cast<std::size_t>(it - ids.begin())].kind != Location::Outside;
-    };
     for (int u : g.coplanar_partners[t])
       for (const auto& s : g.triangle_segments[u])
-        if (inside_closed(s[0]) && inside_closed(s[1])) a.segments.push_back(s);
+        if (sc.inside_closed[s[0]] && sc.inside_closed[s[1]]) a.segments.push_back(s);
   });
   std::vector<int> edges;
   for (std::size_t t = 0; t < F.size(); ++t) {

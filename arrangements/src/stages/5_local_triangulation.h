@@ -43,11 +43,18 @@ class LocalTriangulation {
   std::vector<typename M::Local> off;    // their local form (M::local; origin: a corner)
   std::vector<LocalTriangle> tris;
   std::vector<int> vtri;  // a triangle incident to each vertex
+  std::vector<int> deg;   // each vertex's number of edges (find_edge walks the smaller ring)
+  // The input triangle's boundary edges each vertex lies on (bit k: edge k, from corner k
+  // to corner k + 1): three vertices on one edge are collinear by construction, an exact
+  // zero that orient() answers without arithmetic (the exact stage of implicit points
+  // is the costliest predicate there is, and points on one edge are the common case).
+  std::vector<std::uint8_t> on_edge;
 
   LocalTriangulation(tritri::Plane plane, int sign, const typename M::Vertex& origin)
       : plane_(plane), sign_(sign), origin_(origin) {}
 
   int orient(int a, int b, int c) const {
+    if (on_edge[a] & on_edge[b] & on_edge[c]) return 0;
     return sign_ * tritri::to_int(M::orient2d_local(off[a], off[b], off[c], plane_));
   }
 
@@ -55,12 +62,18 @@ class LocalTriangulation {
     pts.push_back(p);
     off.push_back(M::local(pts.back(), origin_));
     vtri.push_back(-1);
+    deg.push_back(0);
+    on_edge.push_back(0);
     return static_cast<int>(pts.size()) - 1;
   }
 
   void start(int a, int b, int c) {
     tris.push_back({{a, b, c}, {-1, -1, -1}, {-1, -1, -1}});
     vtri[a] = vtri[b] = vtri[c] = 0;
+    deg[a] = deg[b] = deg[c] = 2;
+    on_edge[a] = 0b101;
+    on_edge[b] = 0b011;
+    on_edge[c] = 0b110;
     last_ = 0;
   }
 
@@ -76,6 +89,7 @@ class LocalTriangulation {
   // Inserts vertex p known to lie inside the boundary edge (u, w).
   void split_boundary_edge(int u, int w, int p) {
     const auto [t, k] = find_edge(u, w);
+    on_edge[p] = on_edge[u] & on_edge[w];
     split_edge(t, k, p);
   }
 
@@ -196,6 +210,10 @@ class LocalTriangulation {
     set_vtri(t);
     set_vtri(t1);
     set_vtri(t2);
+    deg[p] = 3;
+    ++deg[a];
+    ++deg[b];
+    ++deg[c];
     last_ = t;
   }
 
@@ -225,7 +243,11 @@ class LocalTriangulation {
       replace_neighbor(U.n[next3(j)], u, u2);
       set_vtri(u);
       set_vtri(u2);
+      ++deg[d];
+      ++deg[p];
     }
+    deg[p] += 3;  // edges to b, c and a, plus d's above
+    ++deg[a];
     set_vtri(t);
     set_vtri(t2);
     last_ = t;
@@ -252,8 +274,11 @@ class LocalTriangulation {
   }
   std::vector<int> ring_;
 
-  // The triangle and edge index of edge (u, w).
+  // The triangle and edge index of edge (u, w), found around its endpoint of smaller degree.
   std::pair<int, int> find_edge(int u, int w) {
+    return deg[w] < deg[u] ? find_edge_around(w, u) : find_edge_around(u, w);
+  }
+  std::pair<int, int> find_edge_around(int u, int w) {
     for (int t : around(u)) {
       const LocalTriangle& T = tris[t];
       const int i = index_of(T, u);
@@ -331,6 +356,10 @@ class LocalTriangulation {
       replace_neighbor(T.n[next3(i)], t, n);
       set_vtri(t);
       set_vtri(n);
+      --deg[uu];
+      --deg[ww];
+      ++deg[p1];
+      ++deg[p2];
       if (p1 != from && p1 != to && p2 != from && p2 != to && orient(a, b, p1) * orient(a, b, p2) < 0)
         queue.push_back({p1, p2});
     }

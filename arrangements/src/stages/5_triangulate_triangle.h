@@ -10,8 +10,11 @@
 // Exactness: every decision is orient2d on the model's points in a projection where t is
 // not degenerate (checked exactly): DoubleModel, tritri's filtered exact predicates on
 // offset implicit points (TPIs implicit, never rounded); ExactModel, Epeck's.
-// Cost: per triangle, O(n log n)-ish expected point insertion by walking plus constraint
-// insertion by edge flips (worst case quadratic in the triangle's points).
+// Cost: per triangle, O(n log n)-ish expected: interior points inserted by walking, then
+// the constraints in a shuffled order, each right after its endpoints (edge points are
+// inserted when first needed, so each splits only the region between the constraints
+// around it: a randomized incremental construction), by edge flips; worst case quadratic
+// in the triangle's points.
 #pragma once
 
 #include <vector>
