@@ -11,6 +11,7 @@
 #include <type_traits>
 
 #include <tritri/box_pairs.h>
+#include <tritri/hub_pairs.h>
 #include <tritri/shared_vertices.h>
 
 #include "arrangements/thread_count.h"
@@ -157,7 +158,13 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
     }
     local.chunks.back().emplace_back(i, j);
   };
-  tritri::for_each_overlapping_pair(boxes.lo_span, boxes.hi_span, F, threads, polygon, visit);
+  // Doubles: the triangles around a hub vertex are paired by their directions from it
+  // (tritri/hub_pairs.h: a fan of n triangles makes O(n) pairs, not n^2 / 2); rational
+  // points: every box pair of their certified intervals.
+  if constexpr (std::is_same_v<Vertex, Vec3>)
+    tritri::for_each_candidate_pair(std::span<const Vec3>(V), F, threads, polygon, visit);
+  else
+    tritri::for_each_overlapping_pair(boxes.lo_span, boxes.hi_span, F, threads, polygon, visit);
 
   std::size_t kept = 0;
   for (const Found& f : found) {

@@ -14,9 +14,13 @@
 //            meet only in shared corners and edges, share an id >= 0; never paired)
 // returns `pairs`: every pair (i, j), i < j, whose closed bounding boxes overlap and that
 // the exact early-outs below do not settle, sorted, each once; `box_pairs`: how many pairs
-// had overlapping boxes (the stat candidate_pairs); `planes`: one M::PlaneCache per
+// the search visited (the stat candidate_pairs); `planes`: one M::PlaneCache per
 // triangle (DoubleModel: tritri::PlaneFilter; stage 3 reuses them).
-// Early-outs, as each box pair is found (tritri::for_each_overlapping_pair, in parallel):
+// Search: tritri::for_each_candidate_pair for doubles (tritri/hub_pairs.h: the box pairs,
+// except that the triangles around a vertex of high degree are paired by their directions
+// from it, so a fan is not paired all to all; a pair left out meets only in that vertex),
+// tritri::for_each_overlapping_pair on the certified intervals of rational points.
+// Early-outs, as each pair is found (in parallel):
 //   - neighbours (a shared vertex or edge by index) that provably meet only in what they
 //     share: tritri::meet_only_in_shared_by_sides, 1 to 4 plane signs;
 //   - other pairs where one triangle lies strictly on one side of the other's plane:
@@ -33,9 +37,11 @@
 //     saddle vertices.
 // Either way the classifiers would report nothing for the pair, so dropping it here
 // changes no result. Plane signs come from one tritri::PlaneFilter per triangle
-// (tritri/plane_filter.h: exact; decisive for slivers) with orient3d as the fallback.
+// (tritri/plane_filter.h: exact; decisive for slivers) with orient3d as the fallback; for
+// doubles the projection test runs before the first sign the filter leaves undecided (an
+// exact orient3d, exactly zero where parts touch in a plane, costs far more than orient2d).
 // Exact: every decision is an exact sign. The result does not depend on `threads`.
-// Cost: the box search (tritri/box_pairs.h) plus O(1) per box pair; memory: 32 bytes per
+// Cost: the search (tritri/box_pairs.h, hub_pairs.h) plus O(1) per pair; memory: 32 bytes per
 // triangle plus the pairs kept (usually a small fraction of the box pairs).
 //
 // candidate_pairs(V, F, threads = 0, polygon = {}): the box pairs alone, as a sorted list
