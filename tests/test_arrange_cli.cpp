@@ -7,14 +7,20 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <sys/stat.h>
+
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
+#include <map>
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <vector>
 
 #include "arrangements/arrange.h"
@@ -66,7 +72,7 @@ TEST(ArrangeCli, BadInputExitsWithOneAndNamesTheProblem) {
       {bad("obj_nan_coordinate.obj"), "obj_nan_coordinate.obj"},
       {bad("obj_inf_coordinate.obj"), "obj_inf_coordinate.obj"},
       {bad("obj_index_out_of_range.obj"), "range"},
-      {bad("empty_file.obj"), "empty_file.obj"},
+      {bad("empty_file.off"), "empty_file.off"},
       {bad("off_truncated.off"), "off_truncated.off"},
       {bad("stl_truncated_binary.stl"), "stl_truncated_binary.stl"},
       {bad("ply_huge_list_length.ply"), "ply_huge_list_length.ply"},
@@ -308,6 +314,155 @@ TEST(ArrangeStats, KeyListWrapsAtTheWidth) {
   EXPECT_EQ(keys, arrangements::kArrangeStatKeys.size());
   EXPECT_GT(n, keys);
   EXPECT_NE(text.find(" intersection_points\n        distinct new"), std::string::npos) << text;
+}
+
+// ---------------------------------------------------------------------------------------
+// Hostile input, round two: output that must not be lost, JSON that must stay JSON, files
+// that arrange writes and must read.
+
+// The flat JSON object --stats prints: key -> raw value; false unless every value is a
+// JSON number, string or null (no inf, nan, or anything else).
+bool flat_json(const std::string& text, std::map<std::string, std::string>& values) {
+  static const std::regex member(
+      R"re(\s*"([a-z0-9_]+)": (-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?|"[^"\\]*"|null)\s*(,|\})\s*)re");
+  if (text.empty() || text.front() != '{') return false;
+  std::size_t at = 1;
+  std::smatch m;
+  while (at < text.size()) {
+    const std::string rest = text.substr(at);
+    if (!std::regex_search(rest, m, member, std::regex_constants::match_continuous)) return false;
+    values[m[1]] = m[2];
+    at += m.length(0);
+    if (m[6] == "}") return at == text.size();
+  }
+  return false;
+}
+
+TEST(ArrangeStats, JsonNeverHoldsNonFiniteNumbers) {
+  arrangements::ArrangeStats s;
+  s.round_max_move = std::numeric_limits<double>::infinity();
+  s.round_max_move_rel = std::numeric_limits<double>::quiet_NaN();
+  s.t_total_s = -std::numeric_limits<double>::infinity();
+  s.peak_rss_mb = std::numeric_limits<double>::max();
+  std::map<std::string, std::string> v;
+  const std::string json = arrangements::stats_json(s);
+  ASSERT_TRUE(flat_json(json, v)) << json;
+  EXPECT_EQ(v["round_max_move"], "null");
+  EXPECT_EQ(v["round_max_move_rel"], "null");
+  EXPECT_EQ(v["t_total_s"], "null");
+  EXPECT_EQ(v["peak_rss_mb"].size(), 311u) << "DBL_MAX with one decimal";
+}
+
+// Two triangles (B pierces A) scaled by 2^e: the crossing points are not doubles, so safe
+// rounding moves them; the figures scale with the model (2^600: squared moves overflow a
+// double; 2^-600: they underflow to 0).
+std::map<std::string, std::string> scaled_round_safe_stats(const fs::path& dir, int e) {
+  std::vector<arrangements::Vec3> V = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, -1}, {1.3, 1.7, 1}, {2.1, 0.9, 1.1}};
+  for (auto& p : V)
+    for (double& c : p) c = std::ldexp(c, e);
+  const std::string in = (dir / ("scaled" + std::to_string(e) + ".off")).string();
+  arrangements::write_off(in, V, {{0, 1, 2}, {3, 4, 5}});
+  const Exit r = spawn(ARRANGE_BIN, {in, "--round", "safe", "--stats", "--threads", "1"}, dir);
+  EXPECT_EQ(r.code, 0) << e << ": " << r.err;
+  std::map<std::string, std::string> v;
+  EXPECT_TRUE(flat_json(r.out.substr(0, r.out.find_last_not_of('\n') + 1), v)) << e << ": " << r.out;
+  return v;
+}
+
+TEST(ArrangeCli, RoundSafeStatsAreJsonAndScaleWithTheModel) {
+  tritri_test::TempDir dir;
+  const auto unit = scaled_round_safe_stats(dir.path(), 0);
+  const double move = std::stod(unit.at("round_max_move")), rel = std::stod(unit.at("round_max_move_rel"));
+  ASSERT_GT(move, 0);
+  ASSERT_GT(rel, 0);
+  for (int e : {600, -600, 560, -560}) {
+    const auto v = scaled_round_safe_stats(dir.path(), e);
+    if (!v.count("round_max_move_rel")) continue;  // refused or not JSON: failed above
+    EXPECT_EQ(v.at("round_max_move_rel"), unit.at("round_max_move_rel")) << e;
+    EXPECT_NEAR(std::stod(v.at("round_max_move")) / std::ldexp(move, e), 1, 1e-3) << e;
+  }
+}
+
+// A failed write to standard output is an error (exit status 1, a message), never lost
+// output with status 0: a full device, a closed stdout.
+TEST(ArrangeCli, AFailedWriteToStandardOutputExitsWithOne) {
+  tritri_test::TempDir dir;
+  const std::string mesh = two_triangles(dir.path());
+  const bool full = fs::exists("/dev/full");
+  for (const std::string& args : {mesh + " --stats", std::string("--help"), mesh + " --stats -o " + dir.path("o.off")})
+    for (const std::string& redirect : {std::string(" >/dev/full"), std::string(" >&-")}) {
+      if (redirect == " >/dev/full" && !full) continue;
+      // stderr into the pipe, stdout to the failing place.
+      const auto r = tritri_test::run_command(std::string(ARRANGE_BIN) + " " + args + " 2>&1" + redirect);
+      EXPECT_EQ(r.status, 1) << args << redirect << ": " << r.out;
+      EXPECT_NE(r.out.find("arrange: "), std::string::npos) << args << redirect << ": " << r.out;
+      EXPECT_NE(r.out.find("standard output"), std::string::npos) << args << redirect << ": " << r.out;
+    }
+  // Nothing written to stdout: a closed stdout does not matter.
+  EXPECT_EQ(tritri_test::run_command(std::string(ARRANGE_BIN) + " " + mesh + " 2>&1 >&-").status, 0);
+}
+
+// -o takes any file name the system takes (up to NAME_MAX bytes; OBJ and OFF also need
+// room for ".provenance.csv"): the temporary file beside it has a short name of its own.
+TEST(ArrangeCli, OutputNamesUpToTheSystemLimitAreWritten) {
+  tritri_test::TempDir dir;
+  const std::string mesh = two_triangles(dir.path());
+  for (const auto& [length, ext] : std::vector<std::pair<std::size_t, std::string>>{
+           {236, ".ply"}, {251, ".ply"}, {255, ".ply"}, {236, ".off"}, {240, ".obj"}}) {
+    const std::string name = std::string(length - ext.size(), 'n') + ext;
+    const Exit e = spawn(ARRANGE_BIN, {mesh, "-o", dir.path(name)}, dir.path());
+    EXPECT_EQ(e.code, 0) << length << ext << ": " << e.err;
+    EXPECT_EQ(spawn(ARRANGE_BIN, {dir.path(name)}, dir.path()).code, 0) << length << ext;
+    std::error_code ec;  // a side file's name may be too long for the system (.ply has none)
+    fs::remove(dir.path(name), ec);
+    fs::remove(dir.path(name + ".provenance.csv"), ec);
+  }
+  EXPECT_EQ(dir.entries(), std::set<std::string>({"stdout.txt", "stderr.txt", "two_triangles.off"}))
+      << "no temporary file stays";
+}
+
+// Replacing an output file keeps its permission bits (and those of its side file); a new
+// file gets the usual 0666 minus the umask.
+TEST(ArrangeCli, ReplacingAnOutputFileKeepsItsMode) {
+  tritri_test::TempDir dir;
+  const std::string mesh = two_triangles(dir.path());
+  auto mode = [](const std::string& p) {
+    struct stat st {};
+    EXPECT_EQ(::stat(p.c_str(), &st), 0) << p;
+    return st.st_mode & 07777;
+  };
+  const std::string fresh = dir.path("fresh.off"), reference = dir.write("reference.txt", "");
+  ASSERT_EQ(spawn(ARRANGE_BIN, {mesh, "-o", fresh}, dir.path()).code, 0);
+  EXPECT_EQ(mode(fresh), mode(reference));
+  EXPECT_EQ(mode(fresh + ".provenance.csv"), mode(reference));
+  for (const ::mode_t m : {0600, 0640, 0604, 0755}) {
+    for (const std::string& p : {fresh, fresh + ".provenance.csv"}) ASSERT_EQ(::chmod(p.c_str(), m), 0);
+    ASSERT_EQ(spawn(ARRANGE_BIN, {mesh, "-o", fresh}, dir.path()).code, 0);
+    EXPECT_EQ(mode(fresh), m);
+    EXPECT_EQ(mode(fresh + ".provenance.csv"), m);
+  }
+}
+
+// An arrangement with no triangles (degenerate input only) is written as an empty mesh,
+// which arrange reads again, in every format, and with every option.
+TEST(ArrangeCli, AnEmptyArrangementIsWrittenAndReadAgain) {
+  tritri_test::TempDir dir;
+  const std::string degenerate =
+      dir.write("degenerate.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n3 0 1 2\n3 0 0 3\n");
+  for (const char* ext : {".off", ".obj", ".ply"}) {
+    const std::string out = dir.path(std::string("empty") + ext), again = dir.path(std::string("again") + ext);
+    const Exit w = spawn(ARRANGE_BIN, {degenerate, "-o", out, "--stats"}, dir.path());
+    ASSERT_EQ(w.code, 0) << w.err;
+    EXPECT_NE(w.out.find("\"out_triangles\": 0,"), std::string::npos) << w.out;
+    std::vector<std::vector<std::string>> reruns = {
+        {out, "--stats", "-o", again}, {out, "--round", "safe", "--check", "-o", again}, {out, "--scale", "--check"},
+        {out, two_triangles(dir.path()), out, "--stats"}};
+    if (std::string(ext) != ".ply") reruns.push_back({out, "--exact", "-o", again});
+    for (const auto& args : reruns) {
+      const Exit r = spawn(ARRANGE_BIN, args, dir.path());
+      EXPECT_EQ(r.code, 0) << ext << " " << shown(args) << ": " << r.err;
+    }
+  }
 }
 
 TEST(MakeTestMeshesCli, EveryHostileOptionValueIsAUsageError) {

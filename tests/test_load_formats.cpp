@@ -117,6 +117,32 @@ TEST(LoadFormats, AsciiStlKeywordsInAnyCase) {
   EXPECT_EQ(s.triangles, (std::vector<Tri>{{0, 1, 2}, {1, 3, 2}}));
 }
 
+// The solid's name is free text to the end of its line (the "solid" and the "endsolid"
+// line): keywords in it are not keywords.
+TEST(LoadFormats, AsciiStlSolidNamesAreFreeText) {
+  TempDir dir;
+  const std::string facet =
+      "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+  for (const std::string begin : {"solid facet", "solid Solid", "solid", "solid solid facet endfacet vertex 1",
+                                   "SOLID endsolid", "solid  facet normal 0 0 1 "})
+    for (const std::string end : {"endsolid", "endsolid facet", "endsolid Solid", "endsolid solid facet vertex",
+                                   "ENDSOLID endsolid"}) {
+      const TriangleSoup s = load_triangle_soup(dir.write("n.stl", begin + "\n" + facet + end + "\n"));
+      EXPECT_EQ(s.vertices, kTriangle) << begin << " / " << end;
+      EXPECT_EQ(s.triangles, (std::vector<Tri>{{0, 1, 2}})) << begin << " / " << end;
+    }
+  // Two solids, each named on both lines.
+  const TriangleSoup two = load_triangle_soup(
+      dir.write("t.stl", "solid facet\n" + facet + "endsolid facet\nsolid a\n" + facet + "endsolid a\n"));
+  EXPECT_EQ(two.triangles, (std::vector<Tri>{{0, 1, 2}, {0, 1, 2}}));
+  // Still refused: a second 'solid' line inside a solid, no 'endsolid'.
+  EXPECT_NE(std::string(refusal(dir.write("s.stl", "solid a\n" + facet + "solid b\n")).what())
+                .find("line 9: 'solid' before the previous 'endsolid'"),
+            std::string::npos);
+  EXPECT_NE(std::string(refusal(dir.write("e.stl", "solid endsolid\n" + facet)).what()).find("without 'endsolid'"),
+            std::string::npos);
+}
+
 TEST(LoadFormats, StlMergesMinusZeroWithZeroKeepingTheFirstAppearance) {
   TempDir dir;
   const std::string path = dir.write("z.stl",
@@ -173,6 +199,38 @@ TEST(LoadFormats, DecimalsAreRoundedLikeStrtodAlsoSubnormalsAndUnderflowToZero) 
     const InputError e = refusal(dir.write("b.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 ") + bad + " 0\nf 1 2 3\n"));
     EXPECT_EQ(e.kind, InputErrorKind::non_finite_coordinate) << bad << ": " << e.what();
   }
+}
+
+// A number has at most one sign: "+-1", "-+1", "++1", "--1" are refused in every text
+// format, with the file and line, as any other token that is not a number.
+TEST(LoadFormats, ANumberHasAtMostOneSign) {
+  TempDir dir;
+  for (const std::string bad : {"+-1", "-+1", "++1", "--1", "+-0", "+-1e3", "+-inf", "+-nan", "1e+-2"}) {
+    const struct {
+      const char* name;
+      std::string text;
+      const char* line;
+    } files[] = {
+        {"s.obj", "v 0 0 0\nv 1 0 0\nv 0 " + bad + " 0\nf 1 2 3\n", "line 3: vertex 3: coordinate '"},
+        {"s.off", "OFF\n3 1 0\n0 0 0\n" + bad + " 0 0\n0 1 0\n3 0 1 2\n", "line 4: vertex 2: coordinate '"},
+        {"s.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 " + bad +
+                      "\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n",
+         "line 5: facet 1: coordinate '"},
+        {"s.ply", std::string("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n") +
+                      "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+                      "0 0 0\n1 0 0\n0 1 " + bad + "\n3 0 1 2\n",
+         "line 12: vertex 3: property 'z' value '"},
+    };
+    for (const auto& f : files) {
+      const InputError e = refusal(dir.write(f.name, f.text));
+      EXPECT_EQ(e.kind, InputErrorKind::malformed) << f.name << " " << bad << ": " << e.what();
+      EXPECT_NE(std::string(e.what()).find(std::string(f.line) + bad + "' is not a"), std::string::npos)
+          << f.name << " " << bad << ": " << e.what();
+    }
+  }
+  // One sign is fine.
+  const TriangleSoup s = load_triangle_soup(dir.write("ok.obj", "v +0 -0 +0\nv +1 0 -0\nv 0 +1 0\nf 1 2 3\n"));
+  EXPECT_EQ(s.vertices, kTriangle);
 }
 
 TEST(LoadFormats, MessagesEscapeBytesThatAreNotPrintableAscii) {
@@ -281,6 +339,50 @@ TEST(LoadFormats, PlyAsciiSkipsNonFiniteValuesOutsideCoordinatesAndNamesTheFileL
   const InputError e = refusal(dir.write("b.ply", head + "0 0 0 0\n1 0 0 0\n0 1 0 0\n3 0 1 -2\n"));
   EXPECT_EQ(e.kind, InputErrorKind::index_out_of_range);
   EXPECT_NE(std::string(e.what()).find("line 14: face 1: vertex index -2"), std::string::npos) << e.what();
+}
+
+// A file with neither vertices nor faces is a valid empty mesh in every format (what
+// write_mesh writes for an empty arrangement, e.g. of degenerate triangles only); one with
+// vertices but no faces is still refused (tests/bad_input/*_no_faces.*), and so is an empty
+// file where the format has a header.
+TEST(LoadFormats, FilesWithoutVerticesAndFacesAreEmptyMeshes) {
+  TempDir dir;
+  const std::string ply_head = "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+                               "property float z\nelement face 0\nproperty list uchar int vertex_indices\n";
+  const std::string binary_ply = "ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty double x\n"
+                                 "property double y\nproperty double z\nelement face 0\n"
+                                 "property list uchar int vertex_indices\nend_header\n";
+  const struct {
+    const char* name;
+    std::string text;
+  } files[] = {{"a.obj", ""},
+               {"b.obj", "# nothing\n\ng group\n"},
+               {"c.off", "OFF\n0 0 0\n"},
+               {"d.off", "OFF 0 0 0"},
+               {"e.ply", ply_head + "end_header\n"},
+               {"f.ply", binary_ply},
+               {"g.ply", "ply\nformat ascii 1.0\nend_header\n"},
+               {"h.stl", "solid empty\nendsolid empty\n"},
+               {"i.stl", std::string(80, ' ') + bytes_of<std::uint32_t>(0)}};
+  for (const auto& f : files) {
+    const std::string path = dir.write(f.name, f.text);
+    const TriangleSoup s = load_triangle_soup(path, 3);
+    EXPECT_TRUE(s.vertices.empty() && s.triangles.empty() && s.label_set.empty() && s.source.empty()) << f.name;
+    EXPECT_EQ(s.label_sets, (std::vector<arrangements::LabelSet>{{3}})) << f.name;
+    // Between other files: the labels stay the files' positions.
+    const std::string one = dir.write("one.obj", kObj);
+    const TriangleSoup all = arrangements::load_triangle_soups({one, path, one});
+    EXPECT_EQ(all.triangles, (std::vector<Tri>{{0, 1, 2}, {3, 4, 5}})) << f.name;
+    EXPECT_EQ(all.label_set, (std::vector<int>{0, 2})) << f.name;
+    EXPECT_EQ(all.source, (std::vector<std::int64_t>{0, 1})) << f.name;
+  }
+  for (const char* name : {"z.off", "z.ply", "z.stl"}) {
+    const InputError e = refusal(dir.write(name, ""));
+    EXPECT_EQ(e.kind, InputErrorKind::empty_mesh) << e.what();
+    EXPECT_NE(std::string(e.what()).find("the file is empty"), std::string::npos) << e.what();
+  }
+  const InputError points = refusal(dir.write("p.obj", "v 0 0 0\n"));
+  EXPECT_EQ(points.kind, InputErrorKind::empty_mesh) << points.what();
 }
 
 TEST(LoadFormats, CountsBeyondIntAreRefusedAsTooLarge) {

@@ -268,6 +268,20 @@ TEST_F(TritriCompare, HelpExitsWithZeroAndNamesTheContract) {
     EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 
+// Output that cannot be written (a full device, a closed stdout) is an error: status 2 (1
+// would say the classifiers disagree) and a message, never status 0 with the output lost.
+TEST_F(TritriCompare, AFailedWriteToStandardOutputExitsWithTwo) {
+  const std::string good = write("cubes.off", concatenate(box({0, 0, 0}, {2, 2, 2}), box({1, 1, 1}, {3, 3, 3})));
+  for (const std::string& args : {good + " --json", good, std::string("--help")})
+    for (const std::string redirect : {" >/dev/full", " >&-"}) {
+      if (redirect == " >/dev/full" && !fs::exists("/dev/full")) continue;
+      const auto r = tritri_test::run_command(std::string(COMPARE_BIN) + " " + args + " 2>&1" + redirect);
+      EXPECT_EQ(r.status, 2) << args << redirect << ": " << r.out;
+      EXPECT_NE(r.out.find("tritri-compare: cannot write to standard output"), std::string::npos)
+          << args << redirect << ": " << r.out;
+    }
+}
+
 // Runs the tool with exactly `args` (no shell: empty arguments pass unchanged); status 2 and
 // a message on stderr expected, no signal, nothing on stdout.
 void expect_usage_error(const std::vector<std::string>& args, const fs::path& dir) {

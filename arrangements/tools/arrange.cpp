@@ -19,6 +19,7 @@
 #include "arrangements/check_arrangement.h"
 #include "arrangements/input_error.h"
 #include "io/mesh_format.h"
+#include "io/standard_output.h"
 #include "support/command_line.h"
 #include "support/process_usage.h"
 #include "arrangements/load_triangle_soup.h"
@@ -50,8 +51,8 @@ options:
                           in (index in the input files' concatenated triangle lists, an
                           n-gon as n - 2 consecutive triangles) and its label set: PLY face properties, or the
                           side file FILE.provenance.csv for OBJ/OFF
-  --exact                 write exact rational coordinates (OBJ/OFF; see README) instead of
-                          coordinates rounded to doubles
+  --exact                 write exact rational coordinates (OBJ/OFF; see
+                          docs/FILE_FORMATS.md) instead of coordinates rounded to doubles
   --round MODE            how the output is rounded to doubles (not with --exact):
                           nearest (the default): every vertex to the nearest double; the
                           result may self-intersect where rounding moved a vertex through
@@ -93,9 +94,9 @@ An option that takes a value may be given once; counts are plain decimal digits.
 
 const char* kUsageEnd = R"(
 exit status: 0 success, 1 bad input (unreadable, unknown format, malformed, NaN/Inf,
-out-of-range indices, empty mesh) or failed output, 2 bad command line (unknown option,
-missing, empty or out-of-range value, option given twice), 3 --check found a violation,
-4 --round safe did not converge.
+out-of-range indices, vertices without faces) or failed output (a file, or standard
+output), 2 bad command line (unknown option, missing, empty or out-of-range value, option
+given twice), 3 --check found a violation, 4 --round safe did not converge.
 )";
 
 std::string usage() {
@@ -103,9 +104,7 @@ std::string usage() {
          kUsageEnd;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   using namespace arrangements;
   std::vector<std::string> inputs;
   bool stats = false, scale = false, exact = false, check = false;
@@ -227,4 +226,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "arrange: error: %s\n", e.what());
     return 1;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  arrangements::detail::keep_standard_streams_open();
+  const int status = run(argc, argv);
+  return arrangements::detail::finish_standard_output("arrange", status, 1);
 }

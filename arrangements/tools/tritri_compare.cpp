@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -21,6 +22,7 @@
 #include "arrangements/arrange_stats.h"
 #include "arrangements/input_error.h"
 #include "arrangements/load_triangle_soup.h"
+#include "io/standard_output.h"
 #include "support/command_line.h"
 #include "support/process_usage.h"
 #include "arrangements/thread_count.h"
@@ -58,8 +60,8 @@ out_triangles, euler, orient3d_calls, orient2d_calls, ...), ratio_classify
 the pipeline without the shared load).
 
 exit status: 0 the classifiers agree, 1 they disagree (the first differences are listed),
-2 error (bad input, or a bad command line: unknown option, missing, empty or out-of-range
-value, option given twice).
+2 error (bad input, standard output that cannot be written, or a bad command line: unknown
+option, missing, empty or out-of-range value, option given twice).
 )";
 
 constexpr long long kMaxRepeat = 1000000, kMaxDifferences = 1000000;
@@ -97,9 +99,7 @@ std::vector<int> canonical_ids(const Graph& g, std::vector<int>& sorted_new) {
   return id;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   using namespace arrangements;
   std::vector<std::string> inputs;
   bool json = false, scale = false, inject = false;
@@ -243,7 +243,7 @@ int main(int argc, char** argv) {
              std::to_string(st.out_vertices) + ", " + std::to_string(st.out_edges) + ", " +
              std::to_string(st.out_triangles) + ")");
     const bool agree = points_equal && segments_equal && counts_equal && euler_equal;
-    auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
+    auto ratio = [](double a, double b) { return b > 0 && std::isfinite(a / b) ? a / b : 0.0; };  // JSON: finite
     // Totals without the shared load (in both t_total_s): the pipelines' own times.
     const double total_n = sn.t_total_s - sn.t_load_s, total_t = st.t_total_s - st.t_load_s;
 
@@ -281,4 +281,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "tritri-compare: error: %s\n", e.what());
     return 2;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  arrangements::detail::keep_standard_streams_open();
+  const int status = run(argc, argv);
+  return arrangements::detail::finish_standard_output("tritri-compare", status, 2);
 }

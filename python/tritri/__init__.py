@@ -73,6 +73,7 @@ from ._tritri import load_mesh as _load_mesh
 from ._tritri import self_intersections as _self_intersections
 from ._tritri import self_intersections_exact as _self_intersections_exact
 from ._tritri import _stats_key_list
+from ._load_path import load_mesh_file as _load_mesh_file
 
 __all__ = ["Result", "ArgumentTypeError", "MAX_THREADS", "classify", "self_intersections", "intersections",
            "arrange", "load_mesh"]
@@ -472,21 +473,22 @@ def load_mesh(path, exact=False):
     a float64 and exact is False; otherwise an n x 3 object array of fractions.Fraction,
     every coordinate exactly (decimals as their correctly rounded float64, rationals as
     written). Either V goes to arrange as it is (exact V runs the exact pipeline).
+    Any path the system takes is read (also names that are not UTF-8: bytes, os.fsdecode's str).
     A missing, unreadable or malformed file, NaN/Inf coordinates, rationals beyond the
     float64 range or with a zero denominator, or out-of-range indices raise ValueError; a
     path that is not str, bytes or os.PathLike, or exact that is not a bool, raises
     ArgumentTypeError.
     """
     try:
-        path = _os.fsdecode(path)  # str, bytes or os.PathLike
+        raw = _os.fsencode(path)  # str, bytes or os.PathLike: the bytes the system takes
     except TypeError:
         raise ArgumentTypeError(f"tritri.load_mesh: path must be a str, bytes or os.PathLike, "
                                 f"got {_describe(path)}") from None
     if not isinstance(exact, (bool, _np.bool_)):
         raise ArgumentTypeError(f"tritri.load_mesh: exact must be True or False, got {_describe(exact)}")
-    if "\0" in path:
+    if b"\0" in raw:
         raise ValueError("tritri.load_mesh: the path contains a NUL character")
-    out = _load_mesh(path)
+    out = _load_mesh_file(raw, _load_mesh)
     if "V_exact" in out:
         V = _fraction_rows(out["V_exact"])
     elif exact:

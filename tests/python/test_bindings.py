@@ -382,6 +382,48 @@ def test_load_mesh_reads_what_was_written_and_refuses_bad_files(tmp_path):
             tritri.load_mesh(path)
 
 
+def test_load_mesh_takes_any_path_the_system_takes(tmp_path):
+    # Names that are not UTF-8 (bytes, str with surrogate escapes, os.PathLike) are read as
+    # the system names them; a refused file's message names it, bytes escaped.
+    base = os.fsencode(tmp_path)
+    quad = b"OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"
+    try:
+        os.mkdir(base + b"/d\xff")
+        with open(base + b"/d\xff/q\xe9\xfe.off", "wb") as f:
+            f.write(quad)
+    except (OSError, UnicodeError):
+        pytest.skip("the file system refuses names that are not UTF-8")
+    raw = base + b"/d\xff/q\xe9\xfe.off"
+    for path in (raw, os.fsdecode(raw), pathlib.Path(os.fsdecode(raw))):
+        m = tritri.load_mesh(path)
+        assert m["V"].shape == (4, 3) and m["F"].shape == (2, 3)
+    cwd = os.getcwd()
+    try:  # a relative path
+        os.chdir(base + b"/d\xff")
+        assert tritri.load_mesh(b"q\xe9\xfe.off")["F"].shape == (2, 3)
+    finally:
+        os.chdir(cwd)
+    with open(base + b"/d\xff/bad\xff.obj", "wb") as f:
+        f.write(b"v 0 0 0\nv 1 0 0\nv 0 +-1 0\nf 1 2 3\n")
+    for name, what in ((b"bad\xff.obj", "line 3: vertex 3: coordinate '+-1' is not a number"),
+                       (b"missing\xff.off", "no such file"), (b"x\xff.xyz", "unknown file extension")):
+        with pytest.raises(ValueError) as e:
+            tritri.load_mesh(base + b"/d\xff/" + name)
+        shown = (base + b"/d\xff/" + name).decode("utf-8", "backslashreplace")
+        assert shown + ": " in str(e.value) and what in str(e.value), str(e.value)
+        assert type(e.value) is ValueError
+    assert sorted(os.listdir(base + b"/d\xff")) == [b"bad\xff.obj", b"q\xe9\xfe.off"]
+
+
+def test_load_mesh_reads_a_file_without_vertices_or_faces_as_an_empty_mesh(tmp_path):
+    for name, text in (("e.obj", ""), ("e.off", "OFF\n0 0 0\n"), ("e.stl", "solid e\nendsolid e\n")):
+        (tmp_path / name).write_text(text)
+        m = tritri.load_mesh(tmp_path / name)
+        assert m["V"].shape == (0, 3) and m["F"].shape == (0, 3)
+        out = tritri.arrange(m["V"], m["F"])
+        assert out["F"].shape == (0, 3)
+
+
 def test_nothing_to_arrange_gives_an_empty_mesh():
     for V, F in ((V3, np.zeros((0, 3), dtype=int)), (np.zeros((3, 3)), F1)):
         out = tritri.arrange(V, F)

@@ -8,7 +8,8 @@
 //                            is the member (a std::size_t, long long, int, double or
 //                            std::string); decimals is 0 for all but the doubles
 //   stats_json(s)            one JSON object: the `arrange --stats` line, and the native /
-//                            tritri objects of `tritri-compare --json`
+//                            tritri objects of `tritri-compare --json`; always valid JSON
+//                            (a double that is not finite is written null)
 //   stats_key_list(...)      the keys with their meanings as text: the key list of
 //                            `arrange --help` and of the docstring of tritri.arrange
 //   the Python dict          tritri.arrange(...)["stats"] (python/tritri_module.cpp, with
@@ -25,6 +26,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <string>
@@ -84,7 +86,8 @@ inline constexpr auto kArrangeStats = std::make_tuple(
                "degenerate triangles removed (repeated or collinear corners)"),
     stat_entry("removed_duplicate", &ArrangeStats::removed_duplicate, 0,
                "duplicate triangles removed (the same three positions)"),
-    stat_entry("candidate_pairs", &ArrangeStats::candidate_pairs, 0, "triangle pairs with overlapping boxes"),
+    stat_entry("candidate_pairs", &ArrangeStats::candidate_pairs, 0,
+               "triangle pairs the box search visited (around a hub vertex: those whose directions from it meet)"),
     stat_entry("classified_pairs", &ArrangeStats::classified_pairs, 0,
                "candidate pairs left to classify (not settled by a plane or as neighbours)"),
     stat_entry("intersecting_pairs", &ArrangeStats::intersecting_pairs, 0,
@@ -170,7 +173,9 @@ inline std::string stats_json(const ArrangeStats& s) {
       out += '"';
     } else if constexpr (std::is_floating_point_v<T>) {
       char buf[400];  // %.6f of any finite double fits
-      if (decimals >= 0)
+      if (!std::isfinite(value))  // JSON has no inf or nan: null (never expected; valid JSON always)
+        std::snprintf(buf, sizeof buf, "null");
+      else if (decimals >= 0)
         std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
       else
         std::snprintf(buf, sizeof buf, "%.*e", -decimals, value);

@@ -25,7 +25,7 @@ enum class InputErrorKind {
                           // rational N/D beyond the largest finite double)
   index_out_of_range,     // a face refers to a vertex that does not exist
   too_few_corners,        // a face with fewer than 3 corners
-  empty_mesh,             // no faces at all
+  empty_mesh,             // vertices but no faces, or an empty file of a format with a header
   too_large,              // more vertices or triangles than the pipeline's int indices allow
                           // (or a rational coordinate with more than 100000 digits)
 };

@@ -63,8 +63,8 @@
 // triangulated at the end of the file).
 //   Text files (OBJ, OFF, ASCII STL, the PLY header and ASCII PLY): lines end in LF, CRLF
 //   or CR; a UTF-8 byte order mark (EF BB BF) at the start of the file is skipped.
-//   Numbers are decimal (optional sign, digits, '.', exponent) and fill their whole
-//   whitespace-separated token; they are rounded correctly (std::from_chars); values that
+//   Numbers are decimal (one optional sign, digits, '.', exponent; "+-1" is refused) and
+//   fill their whole whitespace-separated token; they are rounded correctly (std::from_chars); values that
 //   underflow become the correctly rounded subnormal or zero (as strtod makes them). OBJ
 //   and OFF vertex coordinates may also be rationals (above).
 //   OBJ  v / f statements (f corners i, i/t, i/t/n or i//n; negative = relative to the
@@ -83,7 +83,8 @@
 //   STL  binary when the size is exactly 84 + 50 x (the header's triangle count), else
 //        ASCII when its first word begins with "solid" (any case) and no byte is NUL,
 //        else refused (truncated or malformed). ASCII keywords (solid, facet, vertex,
-//        endfacet, endsolid) in any case. Corners at equal positions (exact comparison,
+//        endfacet, endsolid) in any case; the rest of a solid or endsolid line is the
+//        solid's name, free text ("solid facet"). Corners at equal positions (exact comparison,
 //        -0.0 equals 0.0) become one vertex, in the order of first appearance.
 //   PLY  ascii, binary_little_endian, binary_big_endian; element vertex with float or
 //        double x, y, z; element face with a list vertex_indices (or vertex_index) of
@@ -94,7 +95,10 @@
 // line (text formats) or vertex / face / triangle number, for: a missing or unreadable
 // file, an unknown extension, a malformed or truncated file, NaN or infinite coordinates
 // (also decimals beyond the double range), out-of-range indices, faces with fewer than 3
-// corners, a file without faces, and more than INT_MAX vertices or triangles. Tokens in
+// corners, a file with vertices but no faces, an empty file of a format with a header (OFF,
+// STL, PLY), and more than INT_MAX vertices or triangles. A file with neither vertices nor
+// faces (an empty .obj, "OFF 0 0 0", an STL without facets, ...) is a valid empty mesh, as
+// write_mesh writes an empty arrangement: no vertices, no triangles, label_sets {{label}}. Tokens in
 // messages are quoted as they are, bytes that are not printable ASCII escaped (\xEF).
 // Never crashes and throws nothing else (except std::bad_alloc when memory runs out).
 // Rational coordinates are refused as listed above.

@@ -22,6 +22,8 @@
 //                               in int; every int64 up to 2^53 is then exact)
 //                             property list uint uint labels (the label set)
 //        load_triangle_soup reads it back (the extra face properties are skipped).
+//   A mesh without triangles gives a file without vertices and faces (an empty .obj),
+//   which the loaders read back as an empty mesh.
 //   OBJ and OFF carry no provenance; it goes to the side file path + ".provenance.csv":
 //        the header line "triangle,source,labels", then per triangle t (in order) the line
 //        "t,source[t],l1 l2 ... lk" with label_sets[label_set[t]] space-separated
@@ -36,8 +38,10 @@
 // files back exactly, and so does load_mesh_files (load_triangle_soup.h), into an
 // ExactTriangleSoup; load_triangle_soup reads them only when every coordinate is a double.
 //
-// Atomic: every file is written to a new temporary file in the same folder and renamed
-// into place once complete (and flushed to disk), the side file just before the mesh file.
+// Atomic: every file is written to a new temporary file in the same folder (a short name
+// of its own, ".tritri-XXXXXX", so any file name the system takes can be written) and
+// renamed into place once complete (and flushed to disk), the side file just before the
+// mesh file. A file replaced keeps its permission bits; a new one has 0666 minus the umask.
 // On any failure the temporary files are removed and nothing is left at the final paths by
 // this call (an old file there is replaced only on success; if the mesh file's final rename
 // fails after its side file was placed, the side file is removed).

@@ -3,10 +3,14 @@
 // AtomicFile: the one way this project writes a file that others may read: the bytes go
 // to a new temporary file beside the final path and are renamed into place once complete.
 //
-//   AtomicFile f(path);   creates "path.tmp-PID-N" in the folder of path (O_EXCL: never a
-//                         file that another thread or process is writing)
+//   AtomicFile f(path);   creates ".tritri-XXXXXX" (6 random letters and digits) in the
+//                         folder of path (O_EXCL: never a file that another thread or
+//                         process is writing): a short name of its own, so that any path
+//                         the system takes (a name of up to NAME_MAX bytes) can be written
 //   f.append(bytes)       buffered (1 MiB) writes
-//   f.finish()            writes what is buffered, flushes the file to disk and closes it
+//   f.finish()            writes what is buffered; gives the file the permission bits of
+//                         the file at path when there is one (else it has 0666 minus the
+//                         umask, as any new file); flushes it to disk and closes it
 //   f.commit()            renames the temporary file to path (after finish())
 //   ~AtomicFile()         removes the temporary file unless commit() succeeded
 //
@@ -19,7 +23,8 @@
 // Errors: std::runtime_error naming the final path, what failed and the system's reason:
 //   "PATH: cannot create a temporary file beside it (REASON)"
 //   "PATH: write failed (REASON)", "PATH: cannot flush to disk (REASON)",
-//   "PATH: cannot close (REASON)", "PATH: cannot rename the temporary file into place (REASON)"
+//   "PATH: cannot close (REASON)", "PATH: cannot rename the temporary file into place (REASON)",
+//   "PATH: cannot give the temporary file the mode of the file it replaces (REASON)"
 // (REASON: std::generic_category().message(errno), e.g. "No such file or directory").
 // commit() before finish() is a programming error: std::logic_error.
 #pragma once

@@ -109,7 +109,10 @@ BasicTriangleSoup<Coordinates> soup_of(std::vector<Coordinates>&& vertices, deta
 AnyTriangleSoup load_file(const std::string& path, std::uint32_t label, bool exact) {
   const MeshFormat format = detail::format_of_or_refuse(path, detail::kLoadFormats, "supported:");
   detail::FileBytes in(path);
-  if (in.size() == 0 && in.fill(1) == 0) refuse(InputErrorKind::empty_mesh, path, "the file is empty");
+  // An empty file is an empty OBJ (what write_mesh writes for an empty mesh); the other
+  // formats begin with a header.
+  if (format != MeshFormat::obj && in.size() == 0 && in.fill(1) == 0)
+    refuse(InputErrorKind::empty_mesh, path, "the file is empty");
   detail::SoupBuilder builder(path, exact);
   switch (format) {
     case MeshFormat::obj:
@@ -125,7 +128,11 @@ AnyTriangleSoup load_file(const std::string& path, std::uint32_t label, bool exa
       detail::read_ply(in, builder);
       break;
   }
-  if (builder.triangles.empty()) refuse(InputErrorKind::empty_mesh, path, "the mesh has no faces");
+  // Neither vertices nor faces: a valid empty mesh (as write_mesh writes an empty
+  // arrangement). Vertices without faces: not a mesh (a point cloud, or lost faces).
+  if (builder.triangles.empty() && !builder.vertices.empty())
+    refuse(InputErrorKind::empty_mesh, path,
+           "the mesh has no faces (" + std::to_string(builder.vertices.size()) + " vertices)");
   builder.finish();
   if (!builder.exact_vertices.empty()) return soup_of(std::move(builder.exact_vertices), builder, label);
   return soup_of(std::move(builder.vertices), builder, label);

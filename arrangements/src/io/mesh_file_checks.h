@@ -55,13 +55,18 @@ inline std::string quoted(std::string_view token) {
 
 enum class RealParse { ok, not_a_number, non_finite };
 
-// Strict decimal number (optional sign, digits, '.', exponent) that must fill the whole
+// Strict decimal number (one optional sign, digits, '.', exponent) that must fill the whole
 // token, rounded correctly to F (float or double) by std::from_chars (libstdc++'s fast
 // path, fast_float's algorithm); NaN, infinities and decimals beyond F's range are
 // non_finite; decimals that underflow become the correctly rounded subnormal or zero.
 template <class F>
 RealParse parse_real(std::string_view token, F& value) {
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  // One sign at most: from_chars takes a '-' but no '+', so after a '+' is taken here no
+  // sign may follow ("+-1" is not -1).
+  if (!token.empty() && token.front() == '+') {
+    token.remove_prefix(1);
+    if (!token.empty() && token.front() == '-') return RealParse::not_a_number;
+  }
   if (token.empty() || token.front() == '+') return RealParse::not_a_number;
   // from_chars also reads "inf" and "nan": they come out non-finite below.
   const char* first = token.data();

@@ -129,6 +129,8 @@ class TokenReader {
     }
   }
   long line() const { return lines_.line_number(); }
+  // Drops the rest of the current line: the next token comes from the next line.
+  void skip_rest_of_line() { rest_ = {}; }
   std::size_t pending() const { return rest_.size(); }  // bytes of the current line not read yet
 
  protected:

@@ -133,7 +133,8 @@ bool begins_with_solid(std::string_view token) {
 }
 
 // Outside a facet only "solid", "facet" and "endsolid" matter (any case); inside, "vertex"
-// is followed by three numbers and "endfacet" ends it.
+// is followed by three numbers and "endfacet" ends it. The rest of a "solid" or "endsolid"
+// line is the solid's name, free text ("solid facet" names a solid "facet").
 void read_ascii(FileBytes& in, SoupBuilder& out, std::uint32_t declared) {
   const std::string& path = in.path();
   LineReader lines(in);
@@ -148,9 +149,11 @@ void read_ascii(FileBytes& in, SoupBuilder& out, std::uint32_t declared) {
       if (in_solid)
         refuse_at_line(InputErrorKind::malformed, path, tokens.line(), "'solid' before the previous 'endsolid'");
       in_solid = true;
+      tokens.skip_rest_of_line();
     } else if (equals_ignoring_case(token, "endsolid")) {
       in_solid = false;
       solid_seen = true;
+      tokens.skip_rest_of_line();
     } else if (equals_ignoring_case(token, "facet")) {
       const long facet_line = tokens.line();
       const auto what = [&facets] { return "facet " + std::to_string(facets + 1); };

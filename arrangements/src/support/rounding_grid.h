@@ -35,17 +35,20 @@ inline Vec3 round_point(const Vec3& nearest, double h) {
 }
 
 // An upper bound of the distance between rational q and double point p (the coordinate
-// differences are exact rationals; the factor and one ulp cover to_double, the squares and
-// the root).
+// differences are exact rationals; the factor and one ulp cover to_double, the scaling, the
+// squares, the sum, the root and the product). The differences are divided by the largest
+// one, m, before squaring: unscaled, squares overflow for moves above 2^512 (models beyond
+// about 2^564) and lose digits or vanish below 2^-511, so the bound holds at any magnitude.
 inline double distance_bound(const ExactVec3& q, const Vec3& p) {
-  double sum = 0;
-  for (int k = 0; k < 3; ++k) {
-    const double d = std::abs(CGAL::to_double(q[k] - CGAL::Gmpq(p[k])));
-    sum += d * d;
-  }
-  return sum == 0 ? 0.0
-                  : std::nextafter(std::sqrt(sum) * (1 + 8 * std::numeric_limits<double>::epsilon()),
-                                   std::numeric_limits<double>::infinity());
+  double d[3];
+  for (int k = 0; k < 3; ++k) d[k] = std::abs(CGAL::to_double(q[k] - CGAL::Gmpq(p[k])));
+  const double m = std::max({d[0], d[1], d[2]});
+  if (m == 0) return 0.0;
+  if (!std::isfinite(m)) return std::numeric_limits<double>::infinity();  // beyond the double range
+  double sum = 0;  // in [1, 3]
+  for (double dk : d) sum += (dk / m) * (dk / m);
+  return std::nextafter(m * std::sqrt(sum) * (1 + 8 * std::numeric_limits<double>::epsilon()),
+                        std::numeric_limits<double>::infinity());
 }
 
 // The largest coordinate magnitude of V (0 for none): the L whose ulps the grids count.
