@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Report of a collection run: a Markdown table per model and two PNG charts.
+"""Report of a collection run: a Markdown (and HTML) table per model, two PNG charts, pictures.
 
 usage: bench/report.py RESULTS.jsonl [MORE.jsonl ...] --out DIR [--title TEXT]
+           [--thumbnails MESHES [--arrange PATH] [--thumb-timeout SECONDS]]
 
 Reads the JSON lines written by run_collection.py (several files, e.g. one per shard, are
 merged; when a model appears more than once the last line wins) and writes, each atomically:
@@ -10,19 +11,33 @@ merged; when a model appears more than once the last line wins) and writes, each
                          totals, and the lists of disagreements, errors, crashes and time-outs
   DIR/time_classes.png   models per time class, tritri and native side by side
   DIR/times_sorted.png   both classifiers' times, log scale, models sorted by tritri time
+  DIR/report.html        the same as report.md, a static page (no server, no script)
+  DIR/thumbs/MODEL.png   with --thumbnails: a picture per model (bench/render.py: the
+                         arrangement shaded per input file, intersection curves in red), shown
+                         in report.md's section "Models", disagreements and failures first,
+                         then the slowest; the timing table becomes "Times per model". MESHES
+                         is the folder or manifest CSV given to run_collection.py (the root
+                         of the records' relative `files`). A model arrange fails on, or that
+                         timed out, is drawn from its input alone; a picture that cannot be
+                         made is a note in the report, never a failure of the report.
 Exit status: 0 on success, 2 for a bad command line (an empty value, an option given twice)
-or a missing or malformed results file (with its line number), 1 when the charts could not
-be drawn (report.md is still written).
+or a missing or malformed results file (with its line number), a missing MESHES or arrange,
+1 when the charts could not be drawn (report.md is still written).
 """
 import json
 import os
+import re
 import statistics
 import sys
 import tempfile
+import time
 from pathlib import Path
 
 sys.dont_write_bytecode = True  # no bench/__pycache__ for cli_args
-from cli_args import Parser, path, text  # noqa: E402  (after the line above)
+from cli_args import Parser, path, seconds, text  # noqa: E402  (after the line above)
+from report_html import markdown_to_html  # noqa: E402
+
+DEFAULT_ARRANGE = Path(__file__).resolve().parent.parent / "build" / "bin" / "arrange"
 
 STATUSES = ("agree", "disagree", "error", "crash", "timeout")
 CLASSIFIERS = ("tritri", "native")
@@ -31,6 +46,9 @@ STAGES = (("t_classify_s", "classification"), ("t_total_s", "total"))
 CLASS_EDGES = (0.01, 0.1, 1, 10, 60)
 CLASS_LABELS = ("<0.01 s", "0.01–0.1 s", "0.1–1 s", "1–10 s", "10–60 s", ">60 s")
 COLORS = {"tritri": "tab:blue", "native": "tab:orange"}
+THUMB_SIZE, THUMB_MAX_FACES = 320, 50_000
+# The order of the section "Models": disagreements and failures first.
+STATUS_ORDER = {"disagree": 0, "crash": 1, "error": 2, "timeout": 3, "agree": 4}
 
 
 class ResultsError(Exception):
@@ -175,7 +193,7 @@ def problem_lists(records):
     return out
 
 
-def render_markdown(records, sources, title, charts):
+def render_markdown(records, sources, title, charts, thumbs=None):
     counts, sums = totals(records)
     lines = [f"# {title}", "",
              f"From {', '.join(f'`{s}`' for s in sources)}. Times are seconds; ratio = tritri "
@@ -194,10 +212,126 @@ def render_markdown(records, sources, title, charts):
                      f"| {fmt_ratio((s['tritri'], s['native']))} | {median} |")
     if charts:
         lines += ["", "## Charts", ""] + [f"![{alt}]({name})" for name, alt in charts]
-    lines += ["", "## Models", "", MODEL_HEADER, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
+    if thumbs is not None:
+        lines += gallery(records, thumbs)
+    lines += ["", "## Times per model" if thumbs is not None else "## Models", "", MODEL_HEADER,
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
     lines += [model_row(r) for r in records]
     lines += problem_lists(records)
     return "\n".join(lines) + "\n"
+
+
+# ---------------------------------------------------------------------------------------------
+# Thumbnails
+
+
+GALLERY_HEADER = ("| picture | model | result | input vertices | intersection points "
+                  "| output triangles | curve edges | time (s) | note |")
+
+
+def total_time(rec):
+    t = stage_time(rec, "tritri", "t_total_s")
+    if t is None and isinstance(rec.get("wall_s"), (int, float)):
+        t = float(rec["wall_s"])
+    return t
+
+
+def gallery_order(records):
+    """Disagreements and failures first, then the slowest first, then by name."""
+    return sorted(records, key=lambda r: (STATUS_ORDER[r["status"]], -(total_time(r) or 0),
+                                          r["model"]))
+
+
+def gallery(records, thumbs):
+    lines = ["", "## Models", "",
+             "One picture per model (`bench/render.py`): the arrangement shaded per input file, "
+             "intersection curves in red (thin and faint where hidden). Disagreements and "
+             "failures first, then the slowest. Time: tritri's total time, or the run's wall "
+             "time when it failed.", "",
+             GALLERY_HEADER, "|---|---|---|---:|---:|---:|---:|---:|---|"]
+    for r in gallery_order(records):
+        t = thumbs.get(r["model"], {})
+        alt = re.sub(r"[\[\]]", "", r["model"])
+        pic = f"[![{alt}](thumbs/{t['file']})](thumbs/{t['file']})" if t.get("file") else "–"
+        cells = [pic, f"`{r['model']}`", result_cell(r), fmt_int(r.get("in_vertices")),
+                 fmt_int(r.get("intersection_points")), fmt_int(t.get("out_triangles")),
+                 fmt_int(t.get("curve_edges")), fmt_s(total_time(r)), t.get("note", "")]
+        lines.append("| " + " | ".join(md_cell(c) for c in cells) + " |")
+    return lines
+
+
+def thumb_name(model, taken):
+    """A file name for the model's picture: its id with every other character than letters,
+    digits, '.', '-' and '_' made '_', unique within the report."""
+    name = re.sub(r"[^A-Za-z0-9._-]+", "_", model).strip("._") or "model"
+    candidate, n = name, 1
+    while candidate.lower() in taken:
+        n += 1
+        candidate = f"{name}-{n}"
+    taken.add(candidate.lower())
+    return candidate + ".png"
+
+
+def model_files(rec, root):
+    files = rec.get("files")
+    if not isinstance(files, list) or not files or not all(isinstance(f, str) and f for f in files):
+        return None
+    return [Path(f) if Path(f).is_absolute() else root / f for f in files]
+
+
+def make_thumbnails(records, root, folder, arrange, timeout, log=sys.stderr):
+    """{model: {"file", "out_triangles", "curve_edges", "note"}}; files in folder; stale
+    pictures of earlier runs removed. Never raises for one model's failure."""
+    import render  # numpy and matplotlib: only when pictures are wanted
+    folder.mkdir(exist_ok=True)
+    thumbs, taken, start = {}, set(), time.monotonic()
+    for number, r in enumerate(records, 1):
+        files = model_files(r, root)
+        missing = [f for f in files or [] if not f.is_file()]
+        if files is None or missing:
+            info = {"note": "no picture: the record names no files" if files is None else
+                    f"no picture: no such file {', '.join(map(str, missing))}"}
+        else:
+            try:
+                info = thumbnail(render, r, files, folder, thumb_name(r["model"], taken),
+                                 arrange, timeout)
+            except ImportError:
+                raise
+            except Exception as e:  # noqa: BLE001  one model's picture never fails the report
+                info = {"note": f"no picture: {type(e).__name__}: {e}"}
+        info["note"] = info.get("note", "").replace(f"{root}{os.sep}", "")  # shorter
+        thumbs[r["model"]] = info
+        if number % 100 == 0:
+            print(f"report.py: pictures of {number} of {len(records)} models", file=log)
+    made = {t["file"] for t in thumbs.values() if t.get("file")}
+    for old in folder.glob("*.png"):
+        if old.name not in made:
+            old.unlink()
+    failed = sum(1 for t in thumbs.values() if not t.get("file"))
+    print(f"report.py: {len(made)} pictures in {folder} ({time.monotonic() - start:.1f} s)"
+          + (f", {failed} models without one (see the report)" if failed else ""), file=log)
+    return thumbs
+
+
+def thumbnail(render, rec, files, folder, name, arrange, timeout):
+    """One model's picture: the arrangement, or its input alone when arrange fails or the run
+    timed out. Its gallery entry."""
+    try:
+        if rec["status"] == "timeout":
+            raise render.ArrangeError("the run timed out")
+        summary = render.render(files, folder / name, arrange, THUMB_SIZE, timeout=timeout,
+                                legend=False, max_faces=THUMB_MAX_FACES)
+        return {"file": name, "out_triangles": summary["out_triangles"],
+                "curve_edges": summary["curve_edges"], "note": summary["warning"] or ""}
+    except render.ArrangeError as e:
+        try:
+            render.draw_inputs(files, folder / name, THUMB_SIZE, legend=False,
+                               max_faces=THUMB_MAX_FACES)
+            return {"file": name, "note": f"input only: {e}"}
+        except render.RenderError as e2:
+            return {"note": f"no picture: {e} (nor of the input alone: {e2})"}
+    except render.RenderError as e:
+        return {"note": f"no picture: {e}"}
 
 
 # ---------------------------------------------------------------------------------------------
@@ -295,7 +429,20 @@ def main(argv=None):
     ap.add_argument("results", nargs="+", type=text, help="JSON-lines files written by run_collection.py")
     ap.add_argument("--out", required=True, type=path, help="output folder (created)")
     ap.add_argument("--title", type=text, default="tritri vs native: collection report")
+    ap.add_argument("--thumbnails", type=path, metavar="MESHES",
+                    help="draw a picture per model into DIR/thumbs/; MESHES is the folder or "
+                         "manifest CSV given to run_collection.py")
+    ap.add_argument("--arrange", type=path, default=DEFAULT_ARRANGE,
+                    help="the arrange tool for the pictures (default: %(default)s)")
+    ap.add_argument("--thumb-timeout", type=seconds(0, 10**7), default=120,
+                    help="seconds arrange may take per picture, 0 for none (default: 120)")
     args = ap.parse_args(argv)
+    if args.thumbnails is not None:
+        if not args.thumbnails.exists():
+            ap.error(f"--thumbnails {args.thumbnails}: no such folder or manifest")
+        if not os.access(args.arrange, os.X_OK) or args.arrange.is_dir():
+            ap.error(f"--arrange {args.arrange}: no such executable (build it: cmake --build "
+                     "build --target arrange)")
     try:
         records = sorted(read_results(args.results).values(), key=lambda r: r["model"])
     except ResultsError as e:
@@ -321,10 +468,22 @@ def main(argv=None):
               "matplotlib", file=sys.stderr)
         status = 1
 
-    markdown = render_markdown(records, args.results, args.title, charts)
+    thumbs = None
+    if args.thumbnails is not None:
+        root = args.thumbnails if args.thumbnails.is_dir() else args.thumbnails.parent
+        try:
+            thumbs = make_thumbnails(records, root, args.out / "thumbs", args.arrange,
+                                     args.thumb_timeout)
+        except ImportError as e:
+            print(f"report.py: no pictures ({e}); install matplotlib", file=sys.stderr)
+            thumbs, status = {}, 1
+
+    markdown = render_markdown(records, args.results, args.title, charts, thumbs)
     write_atomic(args.out / "report.md", lambda f: f.write(markdown.encode("utf-8")))
+    page = markdown_to_html(markdown, args.title)
+    write_atomic(args.out / "report.html", lambda f: f.write(page.encode("utf-8")))
     counts, _ = totals(records)
-    print(f"report.py: wrote {args.out / 'report.md'}: {len(records)} models, "
+    print(f"report.py: wrote {args.out / 'report.md'} and report.html: {len(records)} models, "
           + ", ".join(f"{n} {s}" for s, n in counts.items()))
     return status
 

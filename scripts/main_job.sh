@@ -3,7 +3,8 @@
 # model of a collection (native vs tritri classifier) and write the report.
 #   default collection: the generated meshes of build/bin/make_test_meshes -> results/default_meshes
 #   results/results.jsonl   one JSON line per model (bench/run_collection.py)
-#   results/report/         report.md + time_classes.png + times_sorted.png (bench/report.py)
+#   results/report/         report.md + report.html + time_classes.png + times_sorted.png +
+#                           thumbs/ (a picture per model: bench/render.py) (bench/report.py)
 # See bench/README.md ("Collection runs") for the two Python tools and a cluster job array.
 #
 # usage: scripts/main_job.sh [--meshes DIR_OR_CSV] [--resume] [--jobs N] [--timeout SECONDS]
@@ -52,7 +53,7 @@ fi
 gen=()
 [[ -f build/CMakeCache.txt ]] || gen=(-G Ninja)
 cmake -S "$ROOT" -B build "${gen[@]}" -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j "$JOBS" --target tritri-compare make_test_meshes
+cmake --build build -j "$JOBS" --target tritri-compare make_test_meshes arrange
 
 mkdir -p results
 if [[ -z $meshes ]]; then
@@ -66,5 +67,7 @@ if ((!resume)); then
 fi
 # A time-out, crash or disagreement is a result, not a failure: the runner exits 0 for them.
 python3 bench/run_collection.py "$meshes" --out results/results.jsonl "${runner_args[@]}"
-python3 bench/report.py results/results.jsonl --out results/report
-echo "main_job.sh: wrote results/results.jsonl and results/report/report.md"
+# The pictures (results/report/thumbs/) run arrange on each model again; the report reads
+# the models' files relative to the collection's root, as the runner recorded them.
+python3 bench/report.py results/results.jsonl --out results/report --thumbnails "$meshes"
+echo "main_job.sh: wrote results/results.jsonl and results/report/report.md (and report.html)"
