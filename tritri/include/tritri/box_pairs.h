@@ -186,11 +186,9 @@ void visit_overlapping_pairs_with_groups(const std::vector<Box>& boxes, std::spa
     for (int t : items[i]) values.emplace_back(rbox(boxes[t]), t);
     trees[i - first_face] = RTree(values.begin(), values.end());  // bulk loading (packing)
   });
-  const Pairs item_pairs = overlapping_pairs(item_boxes, workers);
-  // Each triangle is in one item and item pairs are unique, so each triangle pair is
-  // visited once.
-  tbb::parallel_for(std::size_t(0), item_pairs.size(), [&](std::size_t k) {
-    int a = item_pairs[k].first, b = item_pairs[k].second;
+  // Each triangle is in one item and item pairs are visited once, so each triangle pair is
+  // visited once; the item pairs are never stored (memory independent of their count).
+  visit_overlapping_pairs(item_boxes, workers, [&](int a, int b) {
     if (items[a].size() > items[b].size()) std::swap(a, b);  // query the larger one
     if (items[b].size() == 1) {
       visit(std::min(items[a][0], items[b][0]), std::max(items[a][0], items[b][0]));
