@@ -55,12 +55,12 @@ Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::V
   lt.start(c0, c1, c2);
   // Edge points: sorted along each edge by an exact order that is monotone along any line
   // (tritri::compare_along_direction: a projection, ties by xyz; intervals settle it where
-  // xyz would meet exact ties on axis-parallel edges). A point is inserted when it is first
-  // needed, into the sub-edge between its inserted neighbours in that order (no predicate).
-  // chain[k]: the local ids along edge k, corners included; rank_of: local id -> (edge, rank).
+  // xyz would meet exact ties on axis-parallel edges); an edge point splits the sub-edge
+  // between its inserted neighbours in that order (no predicate).
+  // chain[k]: the local ids along edge k, corners included; rank_of[l]: (edge, rank) of
+  // local id l on its edge, edge -1 for corners and interior points.
   std::array<std::vector<int>, 3> chain;
-  std::array<std::set<int>, 3> inserted_ranks;
-  std::map<int, std::pair<int, int>> rank_of;
+  std::vector<std::array<int, 2>> rank_of;
   for (int k = 0; k < 3; ++k) {
     std::vector<int> on_edge = g.edge_points[g.triangle_edges[t][k]];
     std::vector<std::pair<typename M::Key, int>> keyed(on_edge.size());
@@ -76,28 +76,15 @@ Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::V
     chain[k].push_back(local_of.at(tri[k]));
     for (int x : on_edge) {
       const int l = add(x);
-      rank_of.emplace(l, std::pair<int, int>{k, static_cast<int>(chain[k].size())});
+      rank_of.resize(global.size(), {-1, 0});
+      rank_of[l] = {k, static_cast<int>(chain[k].size())};
       chain[k].push_back(l);
     }
     chain[k].push_back(local_of.at(tri[(k + 1) % 3]));
-    inserted_ranks[k] = {0, static_cast<int>(chain[k].size()) - 1};
   }
   for (int x : g.triangle_points[t]) add(x);
-  std::vector<char> inserted(global.size(), 0);
-  inserted[c0] = inserted[c1] = inserted[c2] = 1;
-  auto insert = [&](int l) {
-    if (inserted[l]) return;
-    inserted[l] = 1;
-    const auto it = rank_of.find(l);
-    if (it == rank_of.end()) {
-      lt.insert_point(l);
-      return;
-    }
-    const auto [k, r] = it->second;
-    const auto next = inserted_ranks[k].upper_bound(r);
-    lt.split_boundary_edge(chain[k][*std::prev(next)], chain[k][*next], l);
-    inserted_ranks[k].insert(next, r);
-  };
+  rank_of.resize(global.size(), {-1, 0});
+  const std::size_t points = global.size();
 
   // Constraints, each with a plane through its line that is transverse to t.
   const auto& segs = g.triangle_segments[t];
@@ -141,24 +128,58 @@ Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::V
     global.push_back(-static_cast<int>(piece.tpis.size()));
     return lt.add_vertex(x);
   };
-  // With many constraints (a triangle under a coplanar fan, a large face crossed by a fine
-  // mesh): interior points first, then the constraints in a shuffled order (a fixed seed:
-  // deterministic), each right after its endpoints, then the other edge points. An edge
-  // point then splits only the region between the constraints around it, so a constraint
-  // crosses few edges (a randomized incremental construction); inserting every edge point
-  // first makes fans from the corners that each constraint of a strip crosses whole, with
-  // quadratic flips (TwoCylinders: 1.5 M flips, 26 M queue steps; now 0.1 M, 0.14 M).
-  // Interior points must come before the constraints: two constraints may cross at one
-  // of them, which must not become a new TPI; two constraints inside the closed triangle
-  // never cross on its boundary. With few constraints the fans cost nothing, and every
-  // point is inserted first, in local order, then the constraints in list order: the
-  // triangulation the rounding ladder's tests were built on (round_mesh.h).
+  // With few constraints: every edge point, along each edge, then the interior points in
+  // local order, then the constraints in list order (the triangulation the rounding
+  // ladder's tests were built on, round_mesh.h). With many (a triangle under a coplanar
+  // fan, a large face crossed by a fine mesh), inserting every edge point first makes fans
+  // from the corners that each constraint of a strip crosses whole, with quadratic flips
+  // (TwoCylinders: 1.5 M flips, 26 M queue steps); instead the interior points, then the
+  // constraints in a shuffled order (a fixed seed: deterministic), each right after its
+  // endpoints, then the other edge points (0.1 M flips, 0.14 M steps). An edge point then
+  // splits only the region between the constraints around it, so a constraint crosses few
+  // edges (a randomized incremental construction). Interior points must come before the
+  // constraints: two constraints may cross at one of them, which must not become a new
+  // TPI; two constraints inside the closed triangle never cross on its boundary.
   constexpr std::size_t kIncrementalFrom = 32;
-  std::vector<int> order(segs.size());
-  std::iota(order.begin(), order.end(), 0);
-  if (segs.size() >= kIncrementalFrom) {
-    for (std::size_t l = 0; l < inserted.size(); ++l)
-      if (!rank_of.count(static_cast<int>(l))) insert(static_cast<int>(l));
+  auto endpoints = [&](std::size_t s) {
+    auto a = local_of.find(segs[s][0]), b = local_of.find(segs[s][1]);
+    if (a == local_of.end() || b == local_of.end())
+      throw std::logic_error("triangulate: a constraint's endpoint is not a point of its triangle");
+    return std::pair<int, int>{a->second, b->second};
+  };
+  if (segs.size() < kIncrementalFrom) {
+    for (int k = 0; k < 3; ++k)
+      for (std::size_t i = 1; i + 1 < chain[k].size(); ++i)
+        lt.split_boundary_edge(chain[k][i - 1], chain[k].back(), chain[k][i]);
+    for (std::size_t l = 0; l < points; ++l)
+      if (rank_of[l][0] < 0 && l != static_cast<std::size_t>(c0) && l != static_cast<std::size_t>(c1) &&
+          l != static_cast<std::size_t>(c2))
+        lt.insert_point(static_cast<int>(l));
+    for (std::size_t s = 0; s < segs.size(); ++s) {
+      const auto [a, b] = endpoints(s);
+      lt.insert_constraint(a, b, static_cast<int>(s), crossing);
+    }
+  } else {
+    std::array<std::set<int>, 3> inserted_ranks;  // per edge, the ranks inserted so far
+    for (int k = 0; k < 3; ++k) inserted_ranks[k] = {0, static_cast<int>(chain[k].size()) - 1};
+    std::vector<char> inserted(points, 0);
+    inserted[c0] = inserted[c1] = inserted[c2] = 1;
+    auto insert = [&](int l) {
+      if (inserted[l]) return;
+      inserted[l] = 1;
+      const auto [k, r] = rank_of[l];
+      if (k < 0) {
+        lt.insert_point(l);
+        return;
+      }
+      const auto next = inserted_ranks[k].upper_bound(r);
+      lt.split_boundary_edge(chain[k][*std::prev(next)], chain[k][*next], l);
+      inserted_ranks[k].insert(next, r);
+    };
+    for (std::size_t l = 0; l < points; ++l)
+      if (rank_of[l][0] < 0) insert(static_cast<int>(l));
+    std::vector<int> order(segs.size());
+    std::iota(order.begin(), order.end(), 0);
     std::uint64_t seed = 0x2545F4914F6CDD1Dull;
     for (std::size_t i = order.size(); i > 1; --i) {
       seed ^= seed << 13;
@@ -166,18 +187,14 @@ Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::V
       seed ^= seed << 17;
       std::swap(order[i - 1], order[seed % i]);
     }
-  } else {
-    for (std::size_t l = 0; l < inserted.size(); ++l) insert(static_cast<int>(l));
+    for (const int s : order) {
+      const auto [a, b] = endpoints(static_cast<std::size_t>(s));
+      insert(a);
+      insert(b);
+      lt.insert_constraint(a, b, s, crossing);
+    }
+    for (std::size_t l = 0; l < points; ++l) insert(static_cast<int>(l));
   }
-  for (const int s : order) {
-    auto a = local_of.find(segs[s][0]), b = local_of.find(segs[s][1]);
-    if (a == local_of.end() || b == local_of.end())
-      throw std::logic_error("triangulate: a constraint's endpoint is not a point of its triangle");
-    insert(a->second);
-    insert(b->second);
-    lt.insert_constraint(a->second, b->second, s, crossing);
-  }
-  for (std::size_t l = 0; l < inserted.size(); ++l) insert(static_cast<int>(l));
 
   // Coplanar partners: which of them cover each local triangle (all three corners in
   // the partner's closed triangle; local triangles never straddle a partner's edge,

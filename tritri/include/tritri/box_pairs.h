@@ -39,7 +39,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <map>
+#include <numeric>
 #include <span>
 #include <stdexcept>
 #include <utility>
@@ -162,42 +162,58 @@ inline RBox rbox(const Box& b) {
 template <class Visit>
 void visit_overlapping_pairs_with_groups(const std::vector<Box>& boxes, std::span<const std::int64_t> group,
                                          int workers, const Visit& visit) {
-  std::map<std::int64_t, std::vector<int>> faces_by_id;  // deterministic face order
-  std::vector<std::vector<int>> items;                   // triangles of each item
+  // Items in one flat list (no allocation per triangle): the ungrouped triangles, one item
+  // each, then the groups in id order (deterministic), each its triangles in index order.
+  // Item i holds member[first[i] .. first[i + 1]).
+  std::vector<std::pair<std::int64_t, int>> grouped;  // (group id, triangle)
+  std::vector<int> member;
+  member.reserve(boxes.size());
   for (std::size_t t = 0; t < boxes.size(); ++t) {
     if (group[t] >= 0)
-      faces_by_id[group[t]].push_back(static_cast<int>(t));
+      grouped.emplace_back(group[t], static_cast<int>(t));
     else
-      items.push_back({static_cast<int>(t)});
+      member.push_back(static_cast<int>(t));
   }
-  const std::size_t first_face = items.size();  // items from here on are faces
-  for (auto& [id, triangles] : faces_by_id) items.push_back(std::move(triangles));
+  const std::size_t first_face = member.size();  // items from here on are groups
+  std::vector<std::size_t> first(first_face + 1);
+  std::iota(first.begin(), first.end(), std::size_t{0});
+  std::sort(grouped.begin(), grouped.end());
+  for (std::size_t k = 0; k < grouped.size(); ++k) {
+    if (k > 0 && grouped[k].first != grouped[k - 1].first) first.push_back(member.size());
+    member.push_back(grouped[k].second);
+  }
+  if (!grouped.empty()) first.push_back(member.size());
+  const std::size_t items = first.size() - 1;
+  auto size = [&](std::size_t i) { return first[i + 1] - first[i]; };
   std::vector<Box> item_boxes;
-  item_boxes.reserve(items.size());
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    CGAL::Bbox_3 b = boxes[items[i][0]].bbox();
-    for (int t : items[i]) b += boxes[t].bbox();
+  item_boxes.reserve(items);
+  for (std::size_t i = 0; i < items; ++i) {
+    CGAL::Bbox_3 b = boxes[member[first[i]]].bbox();
+    for (std::size_t k = first[i]; k < first[i + 1]; ++k) b += boxes[member[k]].bbox();
     item_boxes.emplace_back(b, static_cast<int>(i));
   }
-  std::vector<RTree> trees(items.size() - first_face);  // one per group
-  tbb::parallel_for(first_face, items.size(), [&](std::size_t i) {
+  std::vector<RTree> trees(items - first_face);  // one per group
+  tbb::parallel_for(first_face, items, [&](std::size_t i) {
     std::vector<std::pair<RBox, int>> values;
-    values.reserve(items[i].size());
-    for (int t : items[i]) values.emplace_back(rbox(boxes[t]), t);
+    values.reserve(size(i));
+    for (std::size_t k = first[i]; k < first[i + 1]; ++k) values.emplace_back(rbox(boxes[member[k]]), member[k]);
     trees[i - first_face] = RTree(values.begin(), values.end());  // bulk loading (packing)
   });
   // Each triangle is in one item and item pairs are visited once, so each triangle pair is
   // visited once; the item pairs are never stored (memory independent of their count).
   visit_overlapping_pairs(item_boxes, workers, [&](int a, int b) {
-    if (items[a].size() > items[b].size()) std::swap(a, b);  // query the larger one
-    if (items[b].size() == 1) {
-      visit(std::min(items[a][0], items[b][0]), std::max(items[a][0], items[b][0]));
+    if (size(a) > size(b)) std::swap(a, b);  // query the larger one
+    if (size(b) == 1) {
+      const int i = member[first[a]], j = member[first[b]];
+      visit(std::min(i, j), std::max(i, j));
       return;
     }
     const RTree& tree = trees[b - first_face];  // b has two triangles or more: a group
-    for (int t : items[a])
+    for (std::size_t k = first[a]; k < first[a + 1]; ++k) {
+      const int t = member[k];
       for (auto it = tree.qbegin(bgi::intersects(rbox(boxes[t]))); it != tree.qend(); ++it)
         visit(std::min(t, it->second), std::max(t, it->second));
+    }
   });
 }
 
