@@ -1,6 +1,6 @@
 """Strict command-line arguments for the bench scripts (the same rules as the C++ tools).
 
-    from cli_args import Parser, integer, seconds, text, path, thread_count
+    from cli_args import Parser, integer, seconds, text, path, thread_count, thread_list
 
 Parser is argparse.ArgumentParser where an option that takes a value may be given once
 (a second one is a usage error, not "the last one wins"). The types refuse, with exit
@@ -8,6 +8,7 @@ status 2 and a message naming the option:
   integer(lo, hi)  plain decimal digits only (no sign, space, "0x", "1e3", "1.5"), in [lo, hi]
   thread_count     integer(0, MAX_THREADS): the cap of `arrange --threads` and tritri.arrange,
                    read from arrangements/include/arrangements/thread_count.h (defined once)
+  thread_list      comma-separated thread counts, none given twice (e.g. "1,2")
   seconds(lo, hi)  a plain decimal number of seconds (digits with an optional fraction; no
                    sign, exponent, NaN or infinity), in [lo, hi]
   text             a non-empty string
@@ -48,6 +49,14 @@ def integer(lo, hi):
 
 
 thread_count = integer(0, MAX_THREADS)
+
+
+def thread_list(value):
+    """Comma-separated thread counts, each a thread_count, none given twice."""
+    counts = [thread_count(v) for v in value.split(",")]
+    if len(set(counts)) != len(counts):
+        raise argparse.ArgumentTypeError(f"a thread count given twice in {value!r}")
+    return counts
 
 
 def seconds(lo, hi):

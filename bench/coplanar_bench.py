@@ -61,7 +61,7 @@ import time
 from pathlib import Path
 
 sys.dont_write_bytecode = True  # no bench/__pycache__ for cli_args, run_collection
-from cli_args import MAX_THREADS, Parser, integer, path, seconds, text, thread_count  # noqa: E402
+from cli_args import MAX_THREADS, Parser, integer, path, seconds, text, thread_count, thread_list  # noqa: E402
 from run_collection import kill_group, parse_tool_json  # noqa: E402
 
 REPO = Path(__file__).resolve().parent.parent
@@ -320,13 +320,6 @@ def int_list(lo, hi):
         return values
     parse.__name__ = "list"
     return parse
-
-
-def thread_list(value):
-    counts = [thread_count(v) for v in value.split(",")]
-    if len(set(counts)) != len(counts):
-        raise argparse.ArgumentTypeError(f"a thread count given twice in {value!r}")
-    return counts
 
 
 def family_list(value):

@@ -40,7 +40,7 @@ import time
 from pathlib import Path
 
 sys.dont_write_bytecode = True  # no bench/__pycache__ for cli_args, run_collection
-from cli_args import MAX_THREADS, Parser, integer, path, seconds, text, thread_count  # noqa: E402
+from cli_args import MAX_THREADS, Parser, integer, path, seconds, text, thread_count, thread_list  # noqa: E402
 from run_collection import (EMBER_CASES, InputError, build_ember_pairs, ember_models,  # noqa: E402
                             kill_group, parse_tool_json)
 
@@ -287,13 +287,6 @@ def write_json(out, name, files, result, binaries, runs):
 
 # ---------------------------------------------------------------------------------------------
 # Command line
-
-
-def thread_list(value):
-    counts = [thread_count(v) for v in value.split(",")]
-    if len(set(counts)) != len(counts):
-        raise argparse.ArgumentTypeError(f"a thread count given twice in {value!r}")
-    return counts
 
 
 def substrings(value):

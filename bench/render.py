@@ -42,6 +42,7 @@ from itertools import combinations
 from pathlib import Path
 
 sys.dont_write_bytecode = True  # no bench/__pycache__ for cli_args, mesh_files
+from atomic_write import write_atomic  # noqa: E402
 from cli_args import Parser, integer, path, seconds, text  # noqa: E402  (after the line above)
 from mesh_files import (READABLE, MeshError, exact_number, float_number,  # noqa: E402,F401
                         input_faces, read_mesh, read_obj, read_off, read_stl, sharing)
@@ -260,22 +261,6 @@ def save_png(fig, f):
         image.save(f, format="PNG", optimize=True)
     except (ImportError, AttributeError):
         f.write(buf.getvalue())
-
-
-def write_atomic(path, write):
-    """Writes through a temporary file in the same folder, then renames it over path."""
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    umask = os.umask(0)
-    os.umask(umask)
-    try:
-        os.chmod(tmp, 0o666 & ~umask)
-        with os.fdopen(fd, "wb") as f:
-            write(f)
-        os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
-        raise
 
 
 # ---------------------------------------------------------------------------------------------

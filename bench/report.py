@@ -29,11 +29,11 @@ import os
 import re
 import statistics
 import sys
-import tempfile
 import time
 from pathlib import Path
 
 sys.dont_write_bytecode = True  # no bench/__pycache__ for cli_args
+from atomic_write import write_atomic  # noqa: E402
 from cli_args import Parser, path, seconds, text  # noqa: E402  (after the line above)
 from report_html import markdown_to_html  # noqa: E402
 
@@ -401,22 +401,6 @@ def plot_sorted_times(plt, records, path):
 
 def save_atomic(fig, path):
     write_atomic(path, lambda f: fig.savefig(f, format="png", dpi=110))
-
-
-def write_atomic(path, write):
-    """Writes through a temporary file in the same folder, then renames it over path."""
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    umask = os.umask(0)
-    os.umask(umask)
-    try:
-        os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes it private; give it a normal file's mode
-        with os.fdopen(fd, "wb") as f:
-            write(f)
-        os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
-        raise
 
 
 # ---------------------------------------------------------------------------------------------

@@ -1,6 +1,6 @@
 // arrangements/src/io/mesh_file_checks.h (internal to the mesh readers and writers)
 //
-// Helpers shared by the mesh readers (the streaming readers of mesh_reader.h, for
+// Helpers shared by the mesh readers (the streaming LineReader and TokenReader, for
 // load_triangle_soup and read_exact_mesh) and by mesh_format.h and write_mesh: refusing
 // with InputError ("PATH: what"), quoting tokens for messages (the one place where bytes
 // that are not printable are escaped), strict number parsing, tokens of a line.
