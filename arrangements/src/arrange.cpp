@@ -22,6 +22,7 @@
 #include "stages/3_classify_pairs.h"
 #include "stages/4_intersection_graph.h"
 #include "stages/5_triangulate.h"
+#include "stages/6_boolean.h"
 #include "support/mesh_counts.h"
 #include "support/process_usage.h"
 
@@ -47,7 +48,7 @@ ExactOutputMesh public_mesh(BasicOutputMesh<ExactModel::Point>&& mesh) {
 // The stages for point model M; keep (double model only) receives the soup and graph.
 template <class M, class Result>
 Result run_stages(const BasicTriangleSoup<typename M::Input>& input, const ArrangeOptions& options,
-                  BasicPipelineInternals<M>* keep) {
+                  BasicPipelineInternals<M>* keep, const CsgNode* tree) {
   if (options.threads > kMaxThreads)  // oneTBB crashes or aborts on huge arenas (thread_count.h)
     throw std::invalid_argument("arrange: threads must be at most " + std::to_string(kMaxThreads) + ", got " +
                                 std::to_string(options.threads));
@@ -66,6 +67,8 @@ Result run_stages(const BasicTriangleSoup<typename M::Input>& input, const Arran
   PreprocessStats pre;
   PreprocessOptions popt;
   popt.scale = options.scale;
+  std::vector<int> kept_as;
+  if (tree) popt.kept_as = &kept_as;
   BasicTriangleSoup<typename M::Vertex> soup = preprocess<M>(input, popt, pre);
   s.merged_vertices = pre.merged_vertices;
   s.removed_degenerate = pre.removed_degenerate;
@@ -103,10 +106,20 @@ Result run_stages(const BasicTriangleSoup<typename M::Input>& input, const Arran
   // Stage 5: triangulate every cut triangle; the result is the output mesh.
   t0 = std::chrono::steady_clock::now();
   TriangulationInfo info;
-  r.mesh = public_mesh(triangulate<M>(soup, graph, pre.scale_exponent, info));
+  info.keep_covers = tree != nullptr;
+  auto mesh = triangulate<M>(soup, graph, pre.scale_exponent, info);
   s.tpi = info.new_tpi;
   if (!keep) graph = {};
   s.t_triangulate_s = seconds_since(t0);
+
+  // Stage 6 (Booleans only): winding numbers per cell, the tree's boundary.
+  if (tree) {
+    t0 = std::chrono::steady_clock::now();
+    boolean_stage<M>(mesh, soup, kept_as, input, info, *tree, pre.scale_exponent, s);
+    s.t_winding_s = seconds_since(t0);
+  }
+  info = TriangulationInfo{};
+  r.mesh = public_mesh(std::move(mesh));
 
   // Output counts (the writers are the caller's: arrangements/write_mesh.h).
   t0 = std::chrono::steady_clock::now();
@@ -147,13 +160,14 @@ void validate_indices(const Soup& in) {
 
 }  // namespace
 
-ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& options, PipelineInternals* keep) {
-  return run_stages<DoubleModel, ArrangeResult>(input, options, keep);
+ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& options, PipelineInternals* keep,
+                           const CsgNode* tree) {
+  return run_stages<DoubleModel, ArrangeResult>(input, options, keep, tree);
 }
 
 ExactArrangeResult run_pipeline(const ExactTriangleSoup& input, const ArrangeOptions& options,
-                                BasicPipelineInternals<ExactModel>* keep) {
-  return run_stages<ExactModel, ExactArrangeResult>(input, options, keep);
+                                BasicPipelineInternals<ExactModel>* keep, const CsgNode* tree) {
+  return run_stages<ExactModel, ExactArrangeResult>(input, options, keep, tree);
 }
 
 void validate_soup(const TriangleSoup& in) {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "arrangements/arrange.h"
+#include "arrangements/boolean.h"
 #include "arrangements/triangle_soup.h"
 #include "models/double_model.h"
 #include "models/exact_model.h"
@@ -23,10 +24,13 @@ struct BasicPipelineInternals {
 };
 using PipelineInternals = BasicPipelineInternals<DoubleModel>;
 
-ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& options, PipelineInternals* keep);
+// tree: when not null, stage 6 turns the arrangement into the boundary of the tree's
+// solid (arrangements/boolean.h; the input's labels name the operands).
+ArrangeResult run_pipeline(const TriangleSoup& input, const ArrangeOptions& options, PipelineInternals* keep,
+                           const CsgNode* tree = nullptr);
 
 // The exact path (ExactModel): the same stages on rational points.
 ExactArrangeResult run_pipeline(const ExactTriangleSoup& input, const ArrangeOptions& options,
-                                BasicPipelineInternals<ExactModel>* keep);
+                                BasicPipelineInternals<ExactModel>* keep, const CsgNode* tree = nullptr);
 
 }  // namespace arrangements

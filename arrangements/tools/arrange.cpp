@@ -16,6 +16,7 @@
 
 #include "arrangements/arrange.h"
 #include "arrangements/arrange_stats.h"
+#include "arrangements/boolean.h"
 #include "arrangements/check_arrangement.h"
 #include "arrangements/input_error.h"
 #include "io/mesh_format.h"
@@ -81,6 +82,14 @@ options:
                           overlapping boxes meets only in shared vertices and edges
                           (tritri on the implicit points; with --round safe, on the rounded
                           mesh that is written); exit status 3 if not
+  --boolean OP            the Boolean of the inputs instead of their arrangement, exactly:
+                          union, intersection, difference (the first input minus the
+                          others) or xor (inside an odd number); each input a closed,
+                          consistently oriented solid (self-intersecting allowed; inside
+                          where its winding number is not 0); the output is the closed
+                          boundary of the result, normals out, with the same provenance
+                          and output options. An input that is not closed: exit 1,
+                          naming it, its unbalanced edges and the first one
   --stats                 print one JSON object with counts and stage times on stdout
   --classifier NAME       pair classifier: tritri (tritri::classify through the adapter;
                           default) or native (the 2020 case analysis)
@@ -112,6 +121,7 @@ int run(int argc, char** argv) {
   int threads = 0;
   std::string classifier = "tritri";
   std::string round = "nearest";
+  std::optional<BooleanOp> boolean_op;
   double round_max_move = RoundSafeOptions{}.max_move_relative;
   detail::CommandLine args("arrange", argc, argv);
   while (args.next()) {
@@ -134,6 +144,13 @@ int run(int argc, char** argv) {
         args.usage_error("unknown rounding '" + round + "' (known: nearest, safe)");
     } else if (a == "--round-max-move") {
       round_max_move = args.positive_number("--round-max-move");
+    } else if (a == "--boolean") {
+      const std::string op = args.value("--boolean");
+      if (op == "union") boolean_op = BooleanOp::Union;
+      else if (op == "intersection") boolean_op = BooleanOp::Intersection;
+      else if (op == "difference") boolean_op = BooleanOp::Difference;
+      else if (op == "xor") boolean_op = BooleanOp::Xor;
+      else args.usage_error("unknown Boolean operation '" + op + "' (known: union, intersection, difference, xor)");
     } else if (a == "--scale") {
       scale = true;
     } else if (a == "--classifier") {
@@ -174,7 +191,9 @@ int run(int argc, char** argv) {
     return std::visit(
         [&](const auto& soup) {
           // The loader checked every fact about the input as it read it (validate once).
-          auto result = detail::arrange_validated(soup, options);
+          auto result = boolean_op ? detail::boolean_validated(
+                                         soup, operation_tree(*boolean_op, static_cast<int>(inputs.size())), options)
+                                   : detail::arrange_validated(soup, options);
           ArrangeStats& s = result.stats;
           add_load_time(s, t_load);
           std::optional<RoundedMesh> rounded;
@@ -219,6 +238,10 @@ int run(int argc, char** argv) {
           return 0;
         },
         input);
+  } catch (const OpenOperandError& e) {
+    const std::string file = e.operand >= 0 && e.operand < static_cast<int>(inputs.size()) ? inputs[e.operand] : "?";
+    std::fprintf(stderr, "arrange: %s: %s\n", file.c_str(), e.what());
+    return 1;
   } catch (const InputError& e) {
     std::fprintf(stderr, "arrange: %s\n", e.what());
     return 1;

@@ -58,6 +58,8 @@ struct ArrangeStats {
   std::size_t round_merged_input = 0;
   std::size_t round_snapped_vertices = 0;
   std::size_t round_nudged = 0;
+  std::size_t winding_cells = 0, winding_components = 0;  // Booleans (boolean.h), else 0
+  double t_winding_s = 0;
 };
 
 // One row of the table.
@@ -115,6 +117,8 @@ inline constexpr auto kArrangeStats = std::make_tuple(
     stat_entry("t_classify_s", &ArrangeStats::t_classify_s, 6,
                "seconds classifying pairs, building the intersection graph"),
     stat_entry("t_triangulate_s", &ArrangeStats::t_triangulate_s, 6, "seconds triangulating"),
+    stat_entry("t_winding_s", &ArrangeStats::t_winding_s, 6,
+               "seconds finding winding numbers and the Boolean's boundary (0 without a Boolean)"),
     stat_entry("t_output_s", &ArrangeStats::t_output_s, 6,
                "seconds making (rounding with --round safe, writing) the output mesh"),
     stat_entry("t_total_s", &ArrangeStats::t_total_s, 6, "seconds in all, loading and writing included"),
@@ -138,7 +142,11 @@ inline constexpr auto kArrangeStats = std::make_tuple(
                "or of a face they touch (exactly), the input arranged again (0 unless every other way failed)"),
     stat_entry("round_nudged", &ArrangeStats::round_nudged, 0,
                "--round safe: moves of vertices by 1 to 1024 ulps where that left fewer conflicts, its last "
-               "resort, summed over that step's cycles (0 unless every other way failed)"));
+               "resort, summed over that step's cycles (0 unless every other way failed)"),
+    stat_entry("winding_cells", &ArrangeStats::winding_cells, 0,
+               "Booleans: cells of space the arrangement's triangles bound, per connected component (0 without)"),
+    stat_entry("winding_components", &ArrangeStats::winding_components, 0,
+               "Booleans: connected components of the arrangement (triangles joined by edges; 0 without)"));
 
 // The keys and meanings alone, in order.
 struct StatKey {

@@ -146,6 +146,7 @@ BasicTriangleSoup<typename M::Vertex> preprocess(const BasicTriangleSoup<typenam
   std::unordered_map<int, std::vector<std::uint32_t>> added_labels;
   {
     std::vector<int> kept_index(nf, -1);
+    if (options.kept_as) options.kept_as->assign(nf, -1);
     for (std::size_t t = 0; t < nf; ++t) {
       if (degenerate[t]) {
         ++stats.removed_degenerate;
@@ -154,6 +155,12 @@ BasicTriangleSoup<typename M::Vertex> preprocess(const BasicTriangleSoup<typenam
       if (first_copy[t] != static_cast<int>(t)) {
         ++stats.removed_duplicate;
         const int k = kept_index[first_copy[t]];  // kept earlier
+        if (options.kept_as) {
+          const Tri& a = kept[k];
+          const Tri& b = corners[t];
+          const int i = a[0] == b[0] ? 0 : a[1] == b[0] ? 1 : 2;  // b[0] in a
+          (*options.kept_as)[t] = 2 * k + (a[(i + 1) % 3] == b[1] ? 0 : 1);
+        }
         if (in.label_set[t] != kept_set[k]) {
           const LabelSet& labels = in.label_sets[in.label_set[t]];
           std::vector<std::uint32_t>& added = added_labels[k];
@@ -162,6 +169,7 @@ BasicTriangleSoup<typename M::Vertex> preprocess(const BasicTriangleSoup<typenam
         continue;
       }
       kept_index[t] = static_cast<int>(kept.size());
+      if (options.kept_as) (*options.kept_as)[t] = 2 * kept_index[t];
       kept.push_back(corners[t]);
       kept_set.push_back(in.label_set[t]);
       kept_source.push_back(in.source[t]);

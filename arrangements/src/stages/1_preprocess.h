@@ -53,6 +53,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "arrangements/input_error.h"
 #include "arrangements/triangle_soup.h"
@@ -62,6 +63,11 @@ namespace arrangements {
 
 struct PreprocessOptions {
   bool scale = false;
+  // When not null, receives one entry per input triangle: -1 for a removed degenerate
+  // one, else 2 k + r where k is the output triangle it became or was merged into as a
+  // duplicate and r is 1 when its corners run the other way round (opposite orientation),
+  // 0 otherwise. Stage 6 (winding numbers) counts every copy with its orientation.
+  std::vector<int>* kept_as = nullptr;
 };
 
 struct PreprocessStats {

@@ -98,6 +98,7 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
     out.triangles.push_back(tr);
     out.source.push_back(soup.source[t]);
     out.label_set.push_back(label_set);
+    if (info.keep_covers) info.emitted_by.push_back(t);
   };
   // Sized once: growth by doubling would hold the old and the new arrays at the peak.
   std::size_t out_triangles = 0;
@@ -112,9 +113,12 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
     const int ti = static_cast<int>(t);
     if (!busy[t]) {
       emit(soup.triangles[t], ti, soup.label_set[t]);
+      if (info.keep_covers) info.cover_of.push_back(-1);
       continue;
     }
     Piece<Point> p = std::move(pieces[t]);  // freed once emitted (peak memory)
+    const int first_cover = static_cast<int>(info.covers.size());
+    if (info.keep_covers) info.covers.insert(info.covers.end(), p.covers.begin(), p.covers.end());
     std::vector<int> cover_labels(p.covers.size());
     for (std::size_t c = 0; c < p.covers.size(); ++c) {
       LabelSet merged;
@@ -131,6 +135,7 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
       for (int& v : tr)
         if (v < 0) v = tpi_id[tpi_offset[t] + (-1 - v)];
       emit(tr, ti, p.covered_by[k] < 0 ? soup.label_set[t] : cover_labels[p.covered_by[k]]);
+      if (info.keep_covers) info.cover_of.push_back(p.covered_by[k] < 0 ? -1 : first_cover + p.covered_by[k]);
     }
   }
   if (scale_exponent != 0)

@@ -19,6 +19,7 @@
 //   new_tpi         the TPIs created (crossings of two constraint segments inside a
 //                   triangle; distinct from each other and from every graph point,
 //                   compared exactly): the stats key `tpi`
+//   emitted_by, cover_of, covers   with keep_covers only (see TriangulationInfo)
 //   output_vertex   per graph point id, then per new TPI (ids graph.points.size() + k, in
 //                   exact lexicographic order): its index in the mesh's vertices, -1 if no
 //                   output triangle uses it (for checks that follow graph ids into the mesh)
@@ -41,6 +42,13 @@ namespace arrangements {
 struct TriangulationInfo {
   std::size_t new_tpi = 0;
   std::vector<int> output_vertex;
+  // With keep_covers (stage 6 needs them): per output triangle, the soup triangle that
+  // emitted it (its orientation is that triangle's) and, when coplanar soup triangles
+  // share its region, an index into covers (the soup triangles covering it, the emitting
+  // one included), else -1.
+  bool keep_covers = false;
+  std::vector<int> emitted_by, cover_of;
+  std::vector<std::vector<int>> covers;
 };
 
 template <class M>
