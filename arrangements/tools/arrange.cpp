@@ -19,6 +19,7 @@
 #include "arrangements/boolean.h"
 #include "arrangements/check_arrangement.h"
 #include "arrangements/input_error.h"
+#include "arrangements/load_csg.h"
 #include "io/mesh_format.h"
 #include "io/standard_output.h"
 #include "support/command_line.h"
@@ -90,6 +91,10 @@ options:
                           boundary of the result, normals out, with the same provenance
                           and output options. An input that is not closed: exit 1,
                           naming it, its unbalanced edges and the first one
+  --csg FILE              the Boolean of a CSG tree instead (OpenSCAD CSG subset: union,
+                          difference, intersection, group, multmatrix applied exactly,
+                          import of mesh files relative to FILE; docs/FILE_FORMATS.md);
+                          no INPUT then
   --stats                 print one JSON object with counts and stage times on stdout
   --classifier NAME       pair classifier: tritri (tritri::classify through the adapter;
                           default) or native (the 2020 case analysis)
@@ -122,6 +127,7 @@ int run(int argc, char** argv) {
   std::string classifier = "tritri";
   std::string round = "nearest";
   std::optional<BooleanOp> boolean_op;
+  std::optional<std::string> csg;
   double round_max_move = RoundSafeOptions{}.max_move_relative;
   detail::CommandLine args("arrange", argc, argv);
   while (args.next()) {
@@ -151,6 +157,9 @@ int run(int argc, char** argv) {
       else if (op == "difference") boolean_op = BooleanOp::Difference;
       else if (op == "xor") boolean_op = BooleanOp::Xor;
       else args.usage_error("unknown Boolean operation '" + op + "' (known: union, intersection, difference, xor)");
+    } else if (a == "--csg") {
+      csg = args.value("--csg");
+      if (csg->empty()) args.usage_error("--csg needs a file name, got ''");
     } else if (a == "--scale") {
       scale = true;
     } else if (a == "--classifier") {
@@ -163,7 +172,9 @@ int run(int argc, char** argv) {
       inputs.push_back(args.operand("an input file name"));
     }
   }
-  if (inputs.empty()) args.usage_error("no input file");
+  if (csg && !inputs.empty()) args.usage_error("--csg takes its operands from the CSG file, not from INPUT");
+  if (csg && boolean_op) args.usage_error("--csg and --boolean exclude each other");
+  if (inputs.empty() && !csg) args.usage_error("no input file");
   if (exact && args.given("--round"))
     args.usage_error("--round and --exact exclude each other (--exact does not round)");
   if (args.given("--round-max-move") && round != "safe") args.usage_error("--round-max-move needs --round safe");
@@ -182,7 +193,17 @@ int run(int argc, char** argv) {
   try {
     const auto t0 = std::chrono::steady_clock::now();
     // Double input takes the fast path; any rational coordinate the exact one.
-    const AnyTriangleSoup input = load_mesh_files(inputs);
+    std::optional<CsgNode> tree;
+    AnyTriangleSoup input;
+    if (csg) {
+      CsgScene scene = load_csg_file(*csg);
+      tree = std::move(scene.tree);
+      input = std::move(scene.soup);
+      inputs = std::move(scene.operand_files);  // names operands in messages
+    } else {
+      input = load_mesh_files(inputs);
+      if (boolean_op) tree = operation_tree(*boolean_op, static_cast<int>(inputs.size()));
+    }
     const double t_load = seconds_since(t0);
     ArrangeOptions options;
     options.classifier = classifier == "tritri" ? Classifier::Tritri : Classifier::Native;
@@ -191,9 +212,7 @@ int run(int argc, char** argv) {
     return std::visit(
         [&](const auto& soup) {
           // The loader checked every fact about the input as it read it (validate once).
-          auto result = boolean_op ? detail::boolean_validated(
-                                         soup, operation_tree(*boolean_op, static_cast<int>(inputs.size())), options)
-                                   : detail::arrange_validated(soup, options);
+          auto result = tree ? detail::boolean_validated(soup, *tree, options) : detail::arrange_validated(soup, options);
           ArrangeStats& s = result.stats;
           add_load_time(s, t_load);
           std::optional<RoundedMesh> rounded;

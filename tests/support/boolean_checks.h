@@ -5,14 +5,15 @@
 //                         tetrahedra to the origin), exactly; works on soups and meshes
 //   unbalanced_edges(m)   edges whose uses in one direction and the other differ (0 for
 //                         a closed, consistently oriented mesh), by exact vertex position
-//   winding_at(soup, label, p)   the winding number of one operand (triangles with that
-//                         label; kAllLabels: every triangle) at a rational point p by a ray cast with CGAL Epeck:
-//                         std::nullopt when the ray meets an edge, a corner or a face in
-//                         its plane (the caller picks another point)
+//   RayWinding(soup, label).at(p)   the winding number of one operand (triangles with
+//                         that label; kAllLabels: every triangle) at a rational point p by
+//                         a ray cast along +x in rationals: std::nullopt when the ray meets
+//                         an edge, a corner or a face in its plane (the caller picks
+//                         another point)
+//   solid_corners(m)      the vertex positions where the closed mesh is not flat (below)
 // None of them uses the code under test.
 #pragma once
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Gmpq.h>
 
 #include <algorithm>
@@ -74,46 +75,122 @@ std::size_t unbalanced_edges(const Mesh& m) {
   return bad;
 }
 
-// Winding number of the triangles carrying `label` at p, by a ray along a fixed generic
-// direction; nullopt when the ray is degenerate for some triangle.
+inline Q3 minus(const Q3& a, const Q3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline Q3 cross(const Q3& a, const Q3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline Q dot(const Q3& a, const Q3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline int sign(const Q& x) { return x > 0 ? 1 : x < 0 ? -1 : 0; }
+
 inline constexpr std::uint32_t kAllLabels = 0xffffffffu;
 
-template <class Soup>
-std::optional<int> winding_at(const Soup& soup, std::uint32_t label, const Q3& p) {
-  using K = CGAL::Exact_predicates_exact_constructions_kernel;
-  const K::Point_3 o(p[0], p[1], p[2]);
-  const K::Vector_3 d(Q(1000003), Q(1009), Q(917));
-  const std::vector<Q3> v = exact_vertices(soup);
-  int w = 0;
-  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
-    const auto& labels = soup.label_sets[soup.label_set[t]];
-    if (label != kAllLabels && std::find(labels.begin(), labels.end(), label) == labels.end()) continue;
-    const auto& tri = soup.triangles[t];
-    const K::Point_3 a(v[tri[0]][0], v[tri[0]][1], v[tri[0]][2]);
-    const K::Point_3 b(v[tri[1]][0], v[tri[1]][1], v[tri[1]][2]);
-    const K::Point_3 c(v[tri[2]][0], v[tri[2]][1], v[tri[2]][2]);
-    if (CGAL::collinear(a, b, c)) continue;
-    const K::Vector_3 n = CGAL::cross_product(b - a, c - a);
-    const auto along = CGAL::sign(n * d);
-    const auto side = CGAL::orientation(a, b, c, o);
-    if (side == CGAL::COPLANAR) return std::nullopt;
-    if (along == CGAL::ZERO) continue;  // parallel to the ray, off its plane
-    // where the line meets the plane
-    const K::FT s = (n * (a - o)) / (n * d);
-    if (s <= 0) continue;
-    const K::Point_3 x = o + s * d;
-    const auto o1 = CGAL::orientation(a, b, x, a + n), o2 = CGAL::orientation(b, c, x, b + n),
-               o3 = CGAL::orientation(c, a, x, c + n);
-    if (o1 == CGAL::COPLANAR || o2 == CGAL::COPLANAR || o3 == CGAL::COPLANAR) {
-      if ((o1 == o2 || o1 == CGAL::COPLANAR || o2 == CGAL::COPLANAR) &&
-          (o2 == o3 || o2 == CGAL::COPLANAR || o3 == CGAL::COPLANAR) &&
-          (o1 == o3 || o1 == CGAL::COPLANAR || o3 == CGAL::COPLANAR))
-        return std::nullopt;  // on an edge or a corner
+// Winding number of the triangles carrying `label` at p, by a ray along +x: each
+// triangle the ray crosses adds sign(n_x); nullopt when the ray is degenerate for some
+// triangle (p in its plane, or the ray through an edge or a corner). The triangles'
+// exact corners, normals and boxes are computed once.
+class RayWinding {
+ public:
+  template <class Soup>
+  RayWinding(const Soup& soup, std::uint32_t label) {
+    const std::vector<Q3> v = exact_vertices(soup);
+    for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+      const auto& labels = soup.label_sets[soup.label_set[t]];
+      if (label != kAllLabels && std::find(labels.begin(), labels.end(), label) == labels.end()) continue;
+      const auto& tri = soup.triangles[t];
+      Face f{v[tri[0]], v[tri[1]], v[tri[2]], {}, {}, {}};
+      f.n = cross(minus(f.b, f.a), minus(f.c, f.a));
+      if (f.n[0] == 0 && f.n[1] == 0 && f.n[2] == 0) continue;  // degenerate: bounds nothing
+      f.lo = f.hi = f.a;
+      for (const Q3* q : {&f.b, &f.c})
+        for (int k = 0; k < 3; ++k) {
+          if ((*q)[k] < f.lo[k]) f.lo[k] = (*q)[k];
+          if ((*q)[k] > f.hi[k]) f.hi[k] = (*q)[k];
+        }
+      faces_.push_back(std::move(f));
+    }
+  }
+
+  std::optional<int> at(const Q3& p) const {
+    int w = 0;
+    for (const Face& f : faces_) {
+      if (f.hi[0] < p[0] || p[1] < f.lo[1] || p[1] > f.hi[1] || p[2] < f.lo[2] || p[2] > f.hi[2]) continue;
+      const int side = sign(dot(f.n, minus(p, f.a)));
+      if (side == 0) return std::nullopt;
+      const int along = sign(f.n[0]);
+      if (along == 0 || side == along) continue;  // parallel, or the plane behind p
+      // inside-ness in the YZ projection: p's projection against the three edges
+      auto turn = [&](const Q3& u, const Q3& w2) {
+        return sign((w2[1] - u[1]) * (p[2] - u[2]) - (w2[2] - u[2]) * (p[1] - u[1]));
+      };
+      const int s1 = turn(f.a, f.b) * along, s2 = turn(f.b, f.c) * along, s3 = turn(f.c, f.a) * along;
+      if (s1 < 0 || s2 < 0 || s3 < 0) continue;                // outside
+      if (s1 == 0 || s2 == 0 || s3 == 0) return std::nullopt;  // on an edge or a corner
+      w += along;
+    }
+    return w;
+  }
+
+ private:
+  struct Face {
+    Q3 a, b, c, n, lo, hi;
+  };
+  std::vector<Face> faces_;
+};
+
+// The corners of a closed mesh's solid: the vertex positions where the surface is not
+// flat (the triangles around them lie in three or more planes, or in two planes whose
+// crease bends there), sorted. Extra vertices that a triangulation puts inside a flat
+// region or along a straight crease are not corners, so two meshes of one solid have the
+// same corners however they are triangulated.
+template <class Mesh>
+std::vector<Q3> solid_corners(const Mesh& m) {
+  const std::vector<Q3> v = exact_vertices(m);
+  std::map<Q3, std::vector<std::size_t>> around;  // position -> triangles
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) around[v[m.triangles[t][k]]].push_back(t);
+  auto normal = [&](std::size_t t) {
+    const auto& x = m.triangles[t];
+    return cross(minus(v[x[1]], v[x[0]]), minus(v[x[2]], v[x[0]]));
+  };
+  auto parallel = [](const Q3& a, const Q3& b) {
+    const Q3 c = cross(a, b);
+    return c[0] == 0 && c[1] == 0 && c[2] == 0 && dot(a, b) > 0;
+  };
+  std::vector<Q3> corners;
+  for (const auto& [p, ts] : around) {
+    std::vector<Q3> planes;
+    for (std::size_t t : ts) {
+      const Q3 n = normal(t);
+      if (std::none_of(planes.begin(), planes.end(), [&](const Q3& q) { return parallel(q, n); }))
+        planes.push_back(n);
+    }
+    if (planes.size() == 1) continue;
+    if (planes.size() > 2) {
+      corners.push_back(p);
       continue;
     }
-    if (o1 == o2 && o2 == o3) w += along == CGAL::POSITIVE ? 1 : -1;
+    // two planes: the crease edges at p (edges of a triangle of each plane) must run
+    // straight through p
+    std::vector<Q3> crease;
+    for (std::size_t t : ts)
+      for (int k = 0; k < 3; ++k) {
+        const Q3& q = v[m.triangles[t][k]];
+        if (q == p) continue;
+        const Q3 d = minus(q, p);
+        if (dot(planes[0], d) == 0 && dot(planes[1], d) == 0) crease.push_back(d);
+      }
+    bool straight = !crease.empty();
+    for (const Q3& d : crease)
+      for (const Q3& e : crease) {
+        const Q3 c = cross(d, e);
+        straight &= c[0] == 0 && c[1] == 0 && c[2] == 0;
+      }
+    bool both_ways = false;
+    for (const Q3& d : crease)
+      for (const Q3& e : crease) both_ways |= dot(d, e) < 0;
+    if (!(straight && both_ways)) corners.push_back(p);
   }
-  return w;
+  return corners;  // sorted: std::map order
 }
 
 }  // namespace tritri_test

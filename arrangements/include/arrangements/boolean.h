@@ -42,7 +42,8 @@ namespace arrangements {
 enum class BooleanOp { Union, Intersection, Difference, Xor };
 
 // A node of a CSG tree: a leaf (operand >= 0: the label) or an operation over children
-// (at least one; Difference: the first minus all others).
+// (Difference: the first minus all others). Union, Difference and Xor of no children are
+// the empty set; Intersection of none (all of space) is refused (std::invalid_argument).
 struct CsgNode {
   int operand = -1;
   BooleanOp op = BooleanOp::Union;

@@ -18,6 +18,7 @@
 #include <variant>
 #include <vector>
 
+#include "io/load_mesh_file.h"
 #include "io/mesh_format.h"
 #include "io/mesh_reader.h"
 
@@ -170,23 +171,35 @@ void append(BasicTriangleSoup<Coordinates>& all, BasicTriangleSoup<OneCoordinate
   all.label_sets.push_back(LabelSet{static_cast<std::uint32_t>(i)});
 }
 
-// The files concatenated (load_triangle_soup.h); exact as for load_file. Doubles until a
-// file has a coordinate that is not a double, then every coordinate exactly.
+}  // namespace
+
+namespace detail {
+
+AnyTriangleSoup load_mesh_file(const std::string& path, std::uint32_t label) { return load_file(path, label, true); }
+
+// Doubles until a file has a coordinate that is not a double, then every coordinate exactly.
+void append_mesh_file(AnyTriangleSoup& all, AnyTriangleSoup&& one, std::size_t i, const std::string& path) {
+  if (i == 0) {  // labels 0, label_sets {{0}}, source 0..: as they are (no copy)
+    all = std::move(one);
+    return;
+  }
+  if (std::holds_alternative<ExactTriangleSoup>(one) && std::holds_alternative<TriangleSoup>(all))
+    all = to_exact(std::move(std::get<TriangleSoup>(all)));
+  if (ExactTriangleSoup* exact_all = std::get_if<ExactTriangleSoup>(&all))
+    std::visit([&](auto& o) { append(*exact_all, std::move(o), i, path); }, one);
+  else  // both doubles
+    append(std::get<TriangleSoup>(all), std::move(std::get<TriangleSoup>(one)), i, path);
+}
+
+}  // namespace detail
+
+namespace {
+
+// The files concatenated (load_triangle_soup.h); exact as for load_file.
 AnyTriangleSoup load_files(const std::vector<std::string>& paths, bool exact) {
   AnyTriangleSoup all;
-  for (std::size_t i = 0; i < paths.size(); ++i) {
-    AnyTriangleSoup one = load_file(paths[i], static_cast<std::uint32_t>(i), exact);
-    if (i == 0) {  // labels 0, label_sets {{0}}, source 0..: as they are (no copy)
-      all = std::move(one);
-      continue;
-    }
-    if (std::holds_alternative<ExactTriangleSoup>(one) && std::holds_alternative<TriangleSoup>(all))
-      all = to_exact(std::move(std::get<TriangleSoup>(all)));
-    if (ExactTriangleSoup* exact_all = std::get_if<ExactTriangleSoup>(&all))
-      std::visit([&](auto& o) { append(*exact_all, std::move(o), i, paths[i]); }, one);
-    else  // both doubles
-      append(std::get<TriangleSoup>(all), std::move(std::get<TriangleSoup>(one)), i, paths[i]);
-  }
+  for (std::size_t i = 0; i < paths.size(); ++i)
+    detail::append_mesh_file(all, load_file(paths[i], static_cast<std::uint32_t>(i), exact), i, paths[i]);
   return all;
 }
 
