@@ -7,7 +7,8 @@
 #   3. install build/ to a temporary prefix and build + run tests/consumer and
 #      examples/cpp against it
 #   4. the Python package: pip install . into build-python/venv, binding tests, example
-#   5. the collection runner and report (pytest, with matplotlib from PyPI), the examples of
+#   5. the collection runner and report, the Boolean bench and real sets (pytest, with
+#      matplotlib and manifold3d from PyPI), the examples of
 #      README.md and docs/*.md (tests/python/test_docs_examples.py), and the
 #      tritri-compare tool on the generated default meshes
 # Environment: JOBS (parallel build jobs, default: number of cores).
@@ -58,11 +59,12 @@ JOBS=$JOBS scripts/test_python.sh
 
 echo "=== [5/5] Collection runner and report tests, tritri-compare on the default meshes"
 VENV=$ROOT/build-python/venv
-"$VENV/bin/python" -m pip install -q matplotlib pytest
+"$VENV/bin/python" -m pip install -q matplotlib pytest manifold3d
 "$VENV/bin/python" -m pytest -q -p no:cacheprovider tests/python/test_run_collection.py tests/python/test_report.py \
   tests/python/test_render.py \
   tests/python/test_script_args.py tests/python/test_compare_upstream.py \
-  tests/python/test_round_safe_sweep.py tests/python/test_coplanar_bench.py
+  tests/python/test_round_safe_sweep.py tests/python/test_coplanar_bench.py \
+  tests/python/test_boolean_bench.py tests/python/test_boolean_real_sets.py
 echo "=== docs examples (README.md, docs/*.md) against the install of stage 3"
 CI=${CI:-1} TRITRI_PREFIX="$prefix/install" JOBS=$JOBS \
   "$VENV/bin/python" -m pytest -q -p no:cacheprovider tests/python/test_docs_examples.py
