@@ -16,6 +16,9 @@
 #include <Eigen/Core>
 
 #include <arrangements/arrange_eigen.h>
+#include <arrangements/boolean.h>
+#include <arrangements/boolean_eigen.h>
+#include <arrangements/load_csg.h>
 #include <arrangements/input_error.h>
 #include <arrangements/load_triangle_soup.h>
 #include <arrangements/arrange_stats.h>
@@ -119,10 +122,10 @@ nb::tuple intersections(const Coords& V1, const Indices& F1, const Coords& V2, c
   return pairs_and_results(std::move(found));
 }
 
-arrangements::Classifier classifier_named(const std::string& name) {
+arrangements::Classifier classifier_named(const std::string& name, const std::string& where = "tritri.arrange") {
   if (name == "tritri") return arrangements::Classifier::Tritri;
   if (name == "native") return arrangements::Classifier::Native;
-  throw std::invalid_argument("tritri.arrange: unknown classifier '" + name + "' (use 'tritri' or 'native')");
+  throw std::invalid_argument(where + ": unknown classifier '" + name + "' (use 'tritri' or 'native')");
 }
 
 // The keys and values of `arrange --stats` (arrange_stats.h: one table for both).
@@ -210,12 +213,13 @@ nb::list fractions_of(const std::vector<ExactVec3>& rows) {
 
 // --- arrange ----------------------------------------------------------------------------
 
-arrangements::ArrangeOptions arrange_options(const std::string& classifier, int threads) {
+arrangements::ArrangeOptions arrange_options(const std::string& classifier, int threads,
+                                             const std::string& where = "tritri.arrange") {
   if (!arrangements::valid_thread_count(threads))
-    throw std::invalid_argument("tritri.arrange: threads must be an integer from 0 to " +
+    throw std::invalid_argument(where + ": threads must be an integer from 0 to " +
                                 std::to_string(arrangements::kMaxThreads) + ", got " + std::to_string(threads));
   arrangements::ArrangeOptions options;
-  options.classifier = classifier_named(classifier);
+  options.classifier = classifier_named(classifier, where);
   options.threads = threads;
   return options;
 }
@@ -317,6 +321,11 @@ nb::dict safely_rounded_dict(Out&& out, int threads, double max_move_relative,
   return arrangement_dict(std::move(v), std::vector<std::uint8_t>(rounded.vertices.size(), 1), plain);
 }
 
+nb::dict double_path_dict(arrangements::EigenArrangement&& out, std::vector<ExactVec3>* exact, int threads,
+                          bool round_safe, double round_max_move, const arrangements::TriangleSoup* input);
+nb::dict exact_path_dict(arrangements::ExactEigenArrangement&& out, int threads, bool round_safe,
+                         double round_max_move);
+
 // The double path; exact_output adds V_exact (the exact output vertices as Fractions).
 nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels, const std::string& classifier,
                  int threads, bool exact_output, bool round_safe, double round_max_move) {
@@ -332,7 +341,16 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
     out = arrangements::detail::arrange_eigen(as_eigen(V), as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange",
                                               exact_output ? &exact : nullptr, round_safe ? &input : nullptr);
   }
-  if (round_safe) return safely_rounded_dict(std::move(out), threads, round_max_move, &input);
+  return double_path_dict(std::move(out), exact_output ? &exact : nullptr, threads, round_safe, round_max_move,
+                          round_safe ? &input : nullptr);
+}
+
+// The dict of a double-path result `out` (arrange, boolean, csg): rounded by round_safe
+// when round_safe (input: round_safe's last resort, may be null), else V, V_is_exact and,
+// when exact is given (the exact output vertices), V_exact.
+nb::dict double_path_dict(arrangements::EigenArrangement&& out, std::vector<ExactVec3>* exact, int threads,
+                          bool round_safe, double round_max_move, const arrangements::TriangleSoup* input) {
+  if (round_safe) return safely_rounded_dict(std::move(out), threads, round_max_move, input);
   const auto nv = static_cast<std::size_t>(out.V.rows());
   std::vector<double> v(3 * nv);
   std::vector<std::uint8_t> flags(nv);
@@ -341,7 +359,7 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
     flags[i] = out.V_is_exact(i) ? 1 : 0;
   }
   nb::dict d = arrangement_dict(std::move(v), std::move(flags), out);
-  if (exact_output) d["V_exact"] = fractions_of(exact);
+  if (exact) d["V_exact"] = fractions_of(*exact);
   return d;
 }
 
@@ -351,16 +369,23 @@ nb::dict arrange_exact(const std::vector<std::string>& V, const Indices& F, std:
                        const std::string& classifier, int threads, bool round_safe, double round_max_move) {
   const arrangements::ArrangeOptions options = arrange_options(classifier, threads);
   arrangements::ExactEigenArrangement out;
-  std::vector<ExactVec3> exact;
-  std::vector<double> rounded;
-  std::vector<std::uint8_t> flags;
   {
     nb::gil_scoped_release release;
     const RationalRows Ve = rational_rows(V, "tritri.arrange: V");
     const std::optional<LabelVector> Le = label_vector(labels);
     out = arrangements::detail::arrange_eigen_exact(Ve, as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange");
   }
+  return exact_path_dict(std::move(out), threads, round_safe, round_max_move);
+}
+
+// The dict of an exact-path result `out` (arrange, boolean, csg): rounded by round_safe
+// when round_safe, else V (V_exact rounded to the nearest doubles), V_is_exact, V_exact.
+nb::dict exact_path_dict(arrangements::ExactEigenArrangement&& out, int threads, bool round_safe,
+                         double round_max_move) {
   if (round_safe) return safely_rounded_dict(std::move(out), threads, round_max_move);
+  std::vector<ExactVec3> exact;
+  std::vector<double> rounded;
+  std::vector<std::uint8_t> flags;
   {
     nb::gil_scoped_release release;
     const auto nv = static_cast<std::size_t>(out.V.rows());
@@ -416,6 +441,85 @@ nb::dict load_mesh(const std::string& path) {
   return d;
 }
 
+// --- boolean and csg ----------------------------------------------------------------------
+
+arrangements::BooleanOp boolean_op_named(const std::string& name) {
+  if (name == "union") return arrangements::BooleanOp::Union;
+  if (name == "intersection") return arrangements::BooleanOp::Intersection;
+  if (name == "difference") return arrangements::BooleanOp::Difference;
+  if (name == "xor") return arrangements::BooleanOp::Xor;
+  throw std::invalid_argument("tritri.boolean: unknown op '" + name +
+                              "' (use 'union', 'intersection', 'difference' or 'xor')");
+}
+
+// The double path of tritri.boolean: operand i is (V[i], F[i]), label i (boolean_eigen.h).
+// OpenOperandError becomes ValueError (the translator below).
+nb::dict boolean(const std::vector<Coords>& V, const std::vector<Indices>& F, const std::string& op,
+                 const std::string& classifier, int threads, bool exact_output, bool round_safe,
+                 double round_max_move) {
+  const arrangements::ArrangeOptions options = arrange_options(classifier, threads, "tritri.boolean");
+  const arrangements::BooleanOp boolean_op = boolean_op_named(op);
+  arrangements::EigenArrangement out;
+  std::vector<ExactVec3> exact;
+  {
+    nb::gil_scoped_release release;
+    std::vector<Eigen::Map<const RowMajorXd>> Ve;
+    std::vector<Eigen::Map<const RowMajorXl>> Fe;
+    for (const Coords& v : V) Ve.push_back(as_eigen(v));
+    for (const Indices& f : F) Fe.push_back(as_eigen(f));
+    out = arrangements::detail::boolean_eigen(Ve, Fe, arrangements::operation_tree(boolean_op, static_cast<int>(V.size())),
+                                              options, "tritri.boolean", exact_output ? &exact : nullptr);
+  }
+  return double_path_dict(std::move(out), exact_output ? &exact : nullptr, threads, round_safe, round_max_move,
+                          nullptr);
+}
+
+// The exact path of tritri.boolean: each operand's V as hexadecimal "n/d" strings.
+nb::dict boolean_exact(const std::vector<std::vector<std::string>>& V, const std::vector<Indices>& F,
+                       const std::string& op, const std::string& classifier, int threads, bool round_safe,
+                       double round_max_move) {
+  const arrangements::ArrangeOptions options = arrange_options(classifier, threads, "tritri.boolean");
+  const arrangements::BooleanOp boolean_op = boolean_op_named(op);
+  arrangements::ExactEigenArrangement out;
+  {
+    nb::gil_scoped_release release;
+    std::vector<RationalRows> Ve;
+    std::vector<Eigen::Map<const RowMajorXl>> Fe;
+    for (std::size_t i = 0; i < V.size(); ++i)
+      Ve.push_back(rational_rows(V[i], "tritri.boolean: meshes[" + std::to_string(i) + "] V"));
+    for (const Indices& f : F) Fe.push_back(as_eigen(f));
+    out = arrangements::detail::boolean_eigen_exact(
+        Ve, Fe, arrangements::operation_tree(boolean_op, static_cast<int>(V.size())), options, "tritri.boolean");
+  }
+  return exact_path_dict(std::move(out), threads, round_safe, round_max_move);
+}
+
+// tritri.csg: a .csg file (load_csg_file) evaluated by boolean(); the double path when its
+// operands are doubles (V_exact with exact_output), else the exact path (V_exact always).
+nb::dict csg(const std::string& path, const std::string& classifier, int threads, bool exact_output, bool round_safe,
+             double round_max_move) {
+  if (path.find('\0') != std::string::npos)
+    throw std::invalid_argument("tritri.csg: the path contains a NUL character");
+  const arrangements::ArrangeOptions options = arrange_options(classifier, threads, "tritri.csg");
+  std::optional<arrangements::EigenArrangement> plain;
+  std::optional<arrangements::ExactEigenArrangement> rational;
+  std::vector<ExactVec3> exact;
+  {
+    nb::gil_scoped_release release;
+    arrangements::CsgScene scene = arrangements::load_csg_file(path);
+    if (const auto* soup = std::get_if<arrangements::TriangleSoup>(&scene.soup))
+      plain = arrangements::detail::eigen_arrangement_of(arrangements::boolean(*soup, scene.tree, options),
+                                                         exact_output ? &exact : nullptr);
+    else
+      rational = arrangements::detail::exact_eigen_arrangement_of(
+          arrangements::boolean(std::get<arrangements::ExactTriangleSoup>(scene.soup), scene.tree, options));
+  }
+  if (plain)
+    return double_path_dict(std::move(*plain), exact_output ? &exact : nullptr, threads, round_safe, round_max_move,
+                            nullptr);
+  return exact_path_dict(std::move(*rational), threads, round_safe, round_max_move);
+}
+
 }  // namespace
 
 NB_MODULE(_tritri, m) {
@@ -425,6 +529,8 @@ NB_MODULE(_tritri, m) {
     try {
       std::rethrow_exception(p);
     } catch (const arrangements::InputError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const arrangements::OpenOperandError& e) {  // an operand of boolean / csg that is not closed
       PyErr_SetString(PyExc_ValueError, e.what());
     }
   });
@@ -472,6 +578,14 @@ NB_MODULE(_tritri, m) {
   m.def("arrange", &arrange, nb::arg("V"), nb::arg("F"), nb::arg("labels").none(), nb::arg("classifier"),
         nb::arg("threads"), nb::arg("exact_output") = false, nb::arg("round_safe") = false,
         nb::arg("round_max_move") = arrangements::RoundSafeOptions{}.max_move_relative);
+  m.def("boolean", &boolean, nb::arg("V"), nb::arg("F"), nb::arg("op"), nb::arg("classifier"), nb::arg("threads"),
+        nb::arg("exact_output") = false, nb::arg("round_safe") = false,
+        nb::arg("round_max_move") = arrangements::RoundSafeOptions{}.max_move_relative);
+  m.def("boolean_exact", &boolean_exact, nb::arg("V"), nb::arg("F"), nb::arg("op"), nb::arg("classifier"),
+        nb::arg("threads"), nb::arg("round_safe") = false,
+        nb::arg("round_max_move") = arrangements::RoundSafeOptions{}.max_move_relative);
+  m.def("csg", &csg, nb::arg("path"), nb::arg("classifier"), nb::arg("threads"), nb::arg("exact_output") = false,
+        nb::arg("round_safe") = false, nb::arg("round_max_move") = arrangements::RoundSafeOptions{}.max_move_relative);
   m.def("arrange_exact", &arrange_exact, nb::arg("V"), nb::arg("F"), nb::arg("labels").none(), nb::arg("classifier"),
         nb::arg("threads"), nb::arg("round_safe") = false,
         nb::arg("round_max_move") = arrangements::RoundSafeOptions{}.max_move_relative);

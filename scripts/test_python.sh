@@ -27,10 +27,10 @@ echo "pip install took $((SECONDS - start)) s"
 # Run outside the checkout so that `import tritri` can only mean the installed package.
 cd "$ROOT/build-python"
 export PYTHONDONTWRITEBYTECODE=1
-echo "=== pytest tests/python/test_bindings.py test_exact_io.py test_round_safe.py test_exact_classify.py"
+echo "=== pytest tests/python/test_bindings.py test_exact_io.py test_round_safe.py test_exact_classify.py test_boolean_bindings.py"
 "$VENV/bin/python" -m pytest -q -p no:cacheprovider "$ROOT/tests/python/test_bindings.py" \
   "$ROOT/tests/python/test_exact_io.py" "$ROOT/tests/python/test_round_safe.py" \
-  "$ROOT/tests/python/test_exact_classify.py"
+  "$ROOT/tests/python/test_exact_classify.py" "$ROOT/tests/python/test_boolean_bindings.py"
 echo "=== examples/python/arrange_example.py"
 "$VENV/bin/python" "$ROOT/examples/python/arrange_example.py" "$ROOT/build-python/two_cubes.off"
 echo "=== python tests passed"

@@ -20,6 +20,7 @@
 #include "arrangements/check_arrangement.h"
 #include "arrangements/input_error.h"
 #include "arrangements/load_csg.h"
+#include "booleans/unbalanced_edges.h"
 #include "io/mesh_format.h"
 #include "io/standard_output.h"
 #include "support/command_line.h"
@@ -110,7 +111,8 @@ const char* kUsageEnd = R"(
 exit status: 0 success, 1 bad input (unreadable, unknown format, malformed, NaN/Inf,
 out-of-range indices, vertices without faces) or failed output (a file, or standard
 output), 2 bad command line (unknown option, missing, empty or out-of-range value, option
-given twice), 3 --check found a violation, 4 --round safe did not converge.
+given twice), 3 --check found a violation, 4 --round safe did not converge (or, for a
+Boolean, its rounded output is not closed).
 )";
 
 std::string usage() {
@@ -221,7 +223,10 @@ int run(int argc, char** argv) {
             RoundSafeOptions ro;
             ro.threads = workers;
             ro.max_move_relative = round_max_move;
-            if constexpr (std::is_same_v<std::decay_t<decltype(soup)>, TriangleSoup>) ro.input = &soup;
+            // The input-level steps re-arrange the input: not for a Boolean (its output is not
+            // the input's arrangement).
+            if constexpr (std::is_same_v<std::decay_t<decltype(soup)>, TriangleSoup>)
+              if (!tree) ro.input = &soup;
             RoundReport report;
             try {
               rounded = round_safe(result.mesh, ro, &report);
@@ -231,6 +236,16 @@ int run(int argc, char** argv) {
                            "arrangement without rounding\n",
                            e.what());
               return 4;
+            }
+            if (tree) {  // a Boolean's rounded output must still be a closed solid
+              const std::size_t open = unbalanced_edges(*rounded);
+              if (open != 0) {
+                std::fprintf(stderr,
+                             "arrange: --round safe: the rounded Boolean is not closed (%zu unbalanced edges "
+                             "where rounding rerouted triangles)\narrange: --exact writes it exactly\n",
+                             open);
+                return 4;
+              }
             }
             add_round_report(report, s);
             add_write_time(s, seconds_since(tr));

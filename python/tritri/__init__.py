@@ -13,6 +13,8 @@ Functions (every decision is an exact predicate on the input coordinates, no tol
     intersections(V1, F1, V2, F2)      -> (pairs, results)
     arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None) -> dict
     load_mesh(path, exact=False)       -> dict (V, F)
+    boolean(meshes, op="union", exact=None, rounding="nearest", classifier="tritri", threads=0) -> dict
+    csg(path, exact=None, rounding="nearest", classifier="tritri", threads=0) -> dict
 
 Arguments are anything numpy.asarray accepts: V as n x 3 real coordinates (any integer or
 floating dtype, or Python numbers; converted to float64, except by arrange: below), F as
@@ -65,6 +67,9 @@ import numpy as _np
 from ._tritri import MAX_THREADS, Result
 from ._tritri import arrange as _arrange
 from ._tritri import arrange_exact as _arrange_exact
+from ._tritri import boolean as _boolean
+from ._tritri import boolean_exact as _boolean_exact
+from ._tritri import csg as _csg
 from ._tritri import classify as _classify
 from ._tritri import classify_exact as _classify_exact
 from ._tritri import intersections as _intersections
@@ -76,7 +81,7 @@ from ._tritri import _stats_key_list
 from ._load_path import load_mesh_file as _load_mesh_file
 
 __all__ = ["Result", "ArgumentTypeError", "MAX_THREADS", "classify", "self_intersections", "intersections",
-           "arrange", "load_mesh"]
+           "arrange", "load_mesh", "boolean", "csg", "BOOLEAN_OPS"]
 __version__ = "0.1.0"
 
 
@@ -254,37 +259,38 @@ def _fraction_rows(flat):
     return a.reshape(-1, 3)
 
 
-def _thread_count(threads):
+def _thread_count(threads, function="arrange"):
     try:
         if isinstance(threads, (bool, _np.bool_)):
             raise TypeError
         n = _operator.index(threads)  # int, numpy integers; not bool, float, str, None
     except TypeError:
-        raise ArgumentTypeError(f"tritri.arrange: threads must be an integer from 0 to {MAX_THREADS}, "
+        raise ArgumentTypeError(f"tritri.{function}: threads must be an integer from 0 to {MAX_THREADS}, "
                                 f"got {_describe(threads)}") from None
     if not 0 <= n <= MAX_THREADS:
-        raise ValueError(f"tritri.arrange: threads must be an integer from 0 to {MAX_THREADS}, "
+        raise ValueError(f"tritri.{function}: threads must be an integer from 0 to {MAX_THREADS}, "
                          f"got {_describe(n)}")
     return n
 
 
-def _round_max_move(value, safe):
+def _round_max_move(value, safe, function="arrange"):
     """The keyword arguments that pass round_max_move on: none for None (the C++ default,
     RoundSafeOptions::max_move_relative, applies), else a float above 0 given only with
     rounding="safe"."""
     if value is None:
         return {}
     if not safe:
-        raise ValueError("tritri.arrange: round_max_move needs rounding='safe'")
+        raise ValueError(f"tritri.{function}: round_max_move needs rounding='safe'")
     if isinstance(value, (bool, _np.bool_)) or not isinstance(value, _numbers.Real):
-        raise ArgumentTypeError(f"tritri.arrange: round_max_move must be a finite number above 0, "
+        raise ArgumentTypeError(f"tritri.{function}: round_max_move must be a finite number above 0, "
                                 f"got {_describe(value)}")
     try:
         x = float(value)
     except OverflowError:  # an int or Fraction beyond the float64 range
         x = _math.inf
     if not (_math.isfinite(x) and x > 0):
-        raise ValueError(f"tritri.arrange: round_max_move must be a finite number above 0, got {_describe(value)}")
+        raise ValueError(f"tritri.{function}: round_max_move must be a finite number above 0, "
+                         f"got {_describe(value)}")
     return {"round_max_move": x}
 
 
@@ -496,3 +502,115 @@ def load_mesh(path, exact=False):
     else:
         V = out["V"]
     return {"V": V, "F": out["F"]}
+
+
+BOOLEAN_OPS = ("union", "intersection", "difference", "xor")
+
+
+def _boolean_options(function, exact, rounding, round_max_move, classifier, threads):
+    """The checked common arguments of boolean and csg: (safe, max_move kwargs, threads)."""
+    if exact is not None and not isinstance(exact, (bool, _np.bool_)):
+        raise ArgumentTypeError(f"tritri.{function}: exact must be None, True or False, got {_describe(exact)}")
+    if not isinstance(classifier, str):
+        raise ArgumentTypeError(f"tritri.{function}: classifier must be 'tritri' or 'native', "
+                                f"got {_describe(classifier)}")
+    if not isinstance(rounding, str):
+        raise ArgumentTypeError(f"tritri.{function}: rounding must be 'nearest' or 'safe', got {_describe(rounding)}")
+    if rounding not in ("nearest", "safe"):
+        raise ValueError(f"tritri.{function}: rounding must be 'nearest' or 'safe', got {rounding!r}")
+    safe = rounding == "safe"
+    if safe and exact:
+        raise ValueError(f"tritri.{function}: exact=True and rounding='safe' exclude each other "
+                         "(the safely rounded mesh is float64)")
+    return safe, _round_max_move(round_max_move, safe, function), _thread_count(threads, function)
+
+
+def _shape_exact(out, want_exact):
+    """out with V_exact as an n x 3 Fraction array when want_exact, else without it."""
+    if "V_exact" in out:
+        exact = out.pop("V_exact")
+        if want_exact:
+            out["V_exact"] = _fraction_rows(exact)
+    return out
+
+
+def boolean(meshes, op="union", *, exact=None, rounding="nearest", round_max_move=None, classifier="tritri",
+            threads=0):
+    """The exact Boolean of closed meshes (arrangements/boolean.h): their arrangement, then
+    the triangles bounding the result, oriented outwards.
+
+    meshes: a non-empty list (or tuple) of (V, F) pairs, operand i = meshes[i] (label i);
+    V and F as for arrange (V float64 or exact values; F m x 3 vertex indices into that
+    operand's V). Every operand must be closed (each edge used as often in one direction
+    as in the other); a point is inside operand i where its winding number is not zero.
+    op: "union", "intersection", "difference" (the first minus all others) or "xor"
+    (inside an odd number), over the operands in order.
+    exact, rounding, round_max_move, classifier, threads: as arrange's exact_output,
+    rounding, round_max_move, classifier and threads (exact=None: V_exact when some
+    operand is exact input; when some value is not exactly a float64, the exact pipeline
+    runs).
+    Returns the dict of arrange for the boundary of the result: V, V_is_exact, (V_exact),
+    F, source (the row of the concatenation of the operands' F, operand 0's rows first),
+    label_set / label_sets (the operands covering each triangle), stats. An empty result
+    (e.g. disjoint operands intersected) has no triangle.
+    Raises ValueError for an op not in BOOLEAN_OPS, no operand, an entry that is not a
+    (V, F) pair, refused arrays (as arrange, the message naming meshes[i]), and an operand
+    that is not closed ("... operand 1 is not closed: ..."); RuntimeError when
+    rounding="safe" does not converge; ArgumentTypeError for arguments of the wrong type.
+    """
+    f = "boolean"
+    if not isinstance(op, str):
+        raise ArgumentTypeError(f"tritri.boolean: op must be one of {', '.join(BOOLEAN_OPS)}, got {_describe(op)}")
+    if op not in BOOLEAN_OPS:
+        raise ValueError(f"tritri.boolean: op must be one of {', '.join(BOOLEAN_OPS)}, got {op!r}")
+    safe, max_move, threads = _boolean_options(f, exact, rounding, round_max_move, classifier, threads)
+    if isinstance(meshes, (str, bytes, dict)) or not hasattr(meshes, "__len__"):
+        raise ArgumentTypeError(f"tritri.boolean: meshes must be a list of (V, F) pairs, got {_describe(meshes)}")
+    meshes = list(meshes)
+    if not meshes:
+        raise ValueError("tritri.boolean: meshes is empty (no operand)")
+    Vs, Fs, exact_input = [], [], False
+    for i, mesh in enumerate(meshes):
+        try:
+            V, F = mesh
+        except (TypeError, ValueError):
+            raise ValueError(f"tritri.boolean: meshes[{i}] must be a (V, F) pair, got {_describe(mesh)}") from None
+        name = f"meshes[{i}] V"
+        values, fraction = _coordinates(V, name, f, _n_by_3(name, f))
+        exact_input = exact_input or fraction or isinstance(values, list)
+        Vs.append(values if isinstance(values, list) else _vertices(values, name, f))
+        Fs.append(_faces(F, f"meshes[{i}] F", f))
+    want_exact = exact_input if exact is None else bool(exact)
+    if any(isinstance(V, list) for V in Vs):
+        out = _boolean_exact([_hex_rationals(V) for V in Vs], Fs, op, classifier, threads, safe, **max_move)
+    else:
+        out = _boolean(Vs, Fs, op, classifier, threads, want_exact and not safe, safe, **max_move)
+    return _shape_exact(out, want_exact)
+
+
+def csg(path, *, exact=None, rounding="nearest", round_max_move=None, classifier="tritri", threads=0):
+    """Evaluates an OpenSCAD .csg file over mesh files exactly (arrangements/load_csg.h: the
+    subset of union, difference, intersection, group, multmatrix and import; operand i is
+    the i-th import, transforms applied in rational arithmetic) with boolean's rules.
+
+    path: a str, bytes or os.PathLike; exact, rounding, round_max_move, classifier,
+    threads: as for boolean (exact=None: V_exact when some transformed coordinate is not a
+    float64, then the exact pipeline runs). Returns boolean's dict.
+    Raises ValueError for an unreadable or malformed .csg file or operand (the message
+    names the file and line) and for an operand that is not closed; the rest as boolean.
+    """
+    f = "csg"
+    try:
+        raw = _os.fsencode(path)
+    except TypeError:
+        raise ArgumentTypeError(f"tritri.csg: path must be a str, bytes or os.PathLike, "
+                                f"got {_describe(path)}") from None
+    safe, max_move, threads = _boolean_options(f, exact, rounding, round_max_move, classifier, threads)
+    if b"\0" in raw:
+        raise ValueError("tritri.csg: the path contains a NUL character")
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError:
+        raise ValueError("tritri.csg: the path is not UTF-8 (not supported for .csg files)") from None
+    out = _csg(text, classifier, threads, bool(exact) and not safe, safe, **max_move)
+    return _shape_exact(out, bool(exact) or (exact is None and "V_exact" in out))
