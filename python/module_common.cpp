@@ -167,12 +167,18 @@ RationalRows rational_rows(const std::vector<std::string>& values, const std::st
   return V;
 }
 
+// GMP's rationals are in lowest terms already: the Fractions are made without normalising
+// them again (a gcd of 30,000-digit numbers took most of a call's time).
 nb::list fractions_of(const std::vector<ExactVec3>& rows) {
   const nb::object Fraction = nb::module_::import_("fractions").attr("Fraction");
+  const bool coprime_constructor = nb::hasattr(Fraction, "_from_coprime_ints");  // Python >= 3.12
+  const nb::object from_coprime = coprime_constructor ? Fraction.attr("_from_coprime_ints") : nb::none();
   nb::list out;
   for (const ExactVec3& row : rows)
-    for (const CGAL::Gmpq& x : row)
-      out.append(Fraction(python_int(mpq_numref(x.mpq())), python_int(mpq_denref(x.mpq()))));
+    for (const CGAL::Gmpq& x : row) {
+      nb::object n = python_int(mpq_numref(x.mpq())), d = python_int(mpq_denref(x.mpq()));
+      out.append(coprime_constructor ? from_coprime(n, d) : Fraction(n, d, nb::arg("_normalize") = false));
+    }
   return out;
 }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "arrangements/csg.h"
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/read_exact_mesh.h"
 #include "arrangements/write_mesh.h"
@@ -125,6 +126,25 @@ TEST(BooleanCli, OpenOperandNamedAndUsageErrors) {
   const Exit f = run({"--csg", (dir.path() / "bad.csg").string()}, dir.path());
   EXPECT_EQ(f.code, 1);
   EXPECT_NE(f.err.find("line 3"), std::string::npos) << f.err;
+}
+
+// The C++ entry csg(): a scaled (exact) and a plain tree, volumes by hand.
+TEST(BooleanCli, CsgFunction) {
+  tritri_test::TempDir dir;
+  box_file(dir.path(), "a.off", {0, 0, 0}, {2, 2, 2});
+  box_file(dir.path(), "b.off", {1, 1, 1}, {3, 3, 3});
+  std::ofstream(dir.path() / "plain.csg") << "difference() { import(\"a.off\"); import(\"b.off\"); }\n";
+  std::ofstream(dir.path() / "scaled.csg")
+      << "multmatrix(m=[[0.1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) union() { import(\"a.off\"); import(\"b.off\"); }\n";
+  ArrangeOptions options;
+  options.threads = 2;
+  const AnyArrangeResult plain = csg((dir.path() / "plain.csg").string(), options);
+  ASSERT_TRUE(std::holds_alternative<ArrangeResult>(plain));
+  EXPECT_EQ(volume(std::get<ArrangeResult>(plain).mesh), 7);
+  const AnyArrangeResult scaled = csg((dir.path() / "scaled.csg").string(), options);
+  ASSERT_TRUE(std::holds_alternative<ExactArrangeResult>(scaled));
+  EXPECT_EQ(volume(std::get<ExactArrangeResult>(scaled).mesh), tritri_test::Q(15, 10));
+  EXPECT_EQ(tritri_test::unbalanced_edges(std::get<ExactArrangeResult>(scaled).mesh), 0u);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Exact Booleans (arrangements/boolean.h) on generated solids: the exact volumes of the
 // results against values known by hand and against the inclusion-exclusion identities,
-// in rationals; every output closed and consistently oriented; coplanar contacts (faces,
+// in rationals; every output closed and consistently oriented, each triangle inside its
+// source triangle; coplanar contacts (faces,
 // edges, corners shared), identical, nested and self-intersecting operands; the exact
 // path; 1 and 2 threads byte-identical; an open operand refused.
 #include <gtest/gtest.h>
@@ -25,8 +26,10 @@ ArrangeOptions threads(int n) {
 
 // The result of op on (a, b), checked closed; its exact volume.
 Q boolean_volume(const TriangleSoup& a, const TriangleSoup& b, BooleanOp op, int n_threads = 2) {
-  const ArrangeResult r = boolean(concatenate(a, b), operation_tree(op, 2), threads(n_threads));
+  const TriangleSoup both = concatenate(a, b);
+  const ArrangeResult r = boolean(both, operation_tree(op, 2), threads(n_threads));
   EXPECT_EQ(unbalanced_edges(r.mesh), 0u);
+  EXPECT_EQ(tritri_test::outside_source(r.mesh, both), 0u);
   return volume(r.mesh);
 }
 

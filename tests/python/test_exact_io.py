@@ -239,3 +239,27 @@ def test_the_extension_checks_exact_strings_too():
     for bad in (good[:8], ["1/0"] + good[1:], ["x/1"] + good[1:], ["1"] + good[1:], ["1/-3"] + good[1:]):
         with pytest.raises(ValueError):
             _tritri.arrange_exact(bad, F, None, "tritri", 1)
+
+
+def test_huge_fractions_are_not_normalised_again(monkeypatch):
+    """Issue 36: the exact pipeline's rationals are in lowest terms; building the Fractions
+    of its input and output must not run the gcd of their normalisation (quadratic in the
+    digits: 29 s of a 34 s call for 30,000-digit input). Counted, not timed: math.gcd as the
+    fractions module sees it."""
+    import fractions
+    import math
+
+    big = Fr(10**3000 + 1, 10**3000)  # in lowest terms, just above 1
+    V = [[0, 0, 0], [big, 0, 0], [0, 1, 0], [T, T, -1], [T, T, 1], [T, -1, T]]
+    calls = []
+    real_gcd = math.gcd
+
+    def counting_gcd(*args):
+        calls.append(max(abs(a).bit_length() for a in args))
+        return real_gcd(*args)
+
+    monkeypatch.setattr(fractions.math, "gcd", counting_gcd)
+    out = tritri.arrange(V, THIRDS_F)
+    monkeypatch.setattr(fractions.math, "gcd", real_gcd)
+    assert big in set(out["V_exact"].ravel())
+    assert not [bits for bits in calls if bits > 1000], "huge Fractions were normalised again"

@@ -11,6 +11,9 @@
 //                         an edge, a corner or a face in its plane (the caller picks
 //                         another point)
 //   solid_corners(m)      the vertex positions where the closed mesh is not flat (below)
+//   outside_source(out, input)   the output triangles with a corner outside the input
+//                         triangle named by their `source` (not in its plane, or beyond one
+//                         of its edges): 0 when every output triangle lies in its source
 // None of them uses the code under test.
 #pragma once
 
@@ -136,6 +139,25 @@ class RayWinding {
   };
   std::vector<Face> faces_;
 };
+
+template <class Mesh, class Soup>
+std::size_t outside_source(const Mesh& out, const Soup& input) {
+  const std::vector<Q3> v = exact_vertices(out), in = exact_vertices(input);
+  std::size_t bad = 0;
+  for (std::size_t f = 0; f < out.triangles.size(); ++f) {
+    const auto& s = input.triangles[out.source[f]];
+    const Q3 &a = in[s[0]], &b = in[s[1]], &c = in[s[2]];
+    const Q3 n = cross(minus(b, a), minus(c, a));
+    bool ok = true;
+    for (int p : out.triangles[f]) {
+      const Q3& x = v[p];
+      ok &= dot(n, minus(x, a)) == 0 && dot(n, cross(minus(b, a), minus(x, a))) >= 0 &&
+            dot(n, cross(minus(c, b), minus(x, b))) >= 0 && dot(n, cross(minus(a, c), minus(x, c))) >= 0;
+    }
+    bad += !ok;
+  }
+  return bad;
+}
 
 // The corners of a closed mesh's solid: the vertex positions where the surface is not
 // flat (the triangles around them lie in three or more planes, or in two planes whose

@@ -81,10 +81,14 @@ SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const Opera
         const int k = half[s + i].second % 3;
         third[i] = &mesh.vertices[t[(k + 2) % 3]];
       }
-      order_around_axis(mesh.vertices[a], mesh.vertices[b], *third[0], third, order, 0,
-                        [](const Point& p, const Point& q, const Point& x, const Point& y) {
-                          return orient3d_points(p, q, x, y);
-                        });
+      // Pieces of the reference's own input triangle lie in its plane, across the edge.
+      std::vector<char> opposite(order.size(), 0);
+      for (std::size_t i = 1; i < order.size(); ++i)
+        opposite[i] = mesh.source[face(s + i)] == mesh.source[face(s)];
+      order_around_axis(
+          mesh.vertices[a], mesh.vertices[b], *third[0], third, order, 0,
+          [](const Point& p, const Point& q, const Point& x, const Point& y) { return orient3d_points(p, q, x, y); },
+          &opposite);
     }
     // The wedge after triangle j (by angle) is faced by j's side towards increasing angle
     // (front if it runs a -> b) and by the next triangle's side towards decreasing angle.
