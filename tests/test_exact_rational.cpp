@@ -490,7 +490,7 @@ TEST(ExactRationalCli, RefusesBadRationalsWithExitOne) {
       {"v 1/0 0 0\n", "has a zero denominator"},
       {"v 1/3/5 0 0\n", "is not a number"},
       {"v 0 x/3 0\n", "is not a number"},
-      {"v 0 0 " + huge + "/3\n", "is a huge rational"},
+      {"v 0 0 " + huge + "/3\n", "is beyond the largest finite double"},  // read whole, judged by its value
   };
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const std::string name = "bad" + std::to_string(i) + ".obj";

@@ -25,6 +25,7 @@
 #include "io/standard_output.h"
 #include "support/command_line.h"
 #include "support/process_usage.h"
+#include "support/worker_threads.h"
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/round_mesh.h"
 #include "arrangements/thread_count.h"
@@ -109,10 +110,11 @@ An option that takes a value may be given once; counts are plain decimal digits.
 
 const char* kUsageEnd = R"(
 exit status: 0 success, 1 bad input (unreadable, unknown format, malformed, NaN/Inf,
-out-of-range indices, vertices without faces) or failed output (a file, or standard
-output), 2 bad command line (unknown option, missing, empty or out-of-range value, option
-given twice), 3 --check found a violation, 4 --round safe did not converge (or, for a
-Boolean, its rounded output is not closed).
+out-of-range indices, vertices without faces), failed output (a file, or standard
+output) or worker threads the system refuses ("cannot start N worker threads": ulimit
+-u or -v; --threads sets fewer), 2 bad command line (unknown option, missing, empty or
+out-of-range value, option given twice), 3 --check found a violation, 4 --round safe did
+not converge (or, for a Boolean, its rounded output is not closed).
 )";
 
 std::string usage() {
@@ -191,6 +193,7 @@ int run(int argc, char** argv) {
   }
   const int workers = threads > 0 ? threads : tbb::info::default_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, workers);
+  detail::exit_on_worker_failure("arrange", workers, 1);
 
   try {
     const auto t0 = std::chrono::steady_clock::now();
@@ -207,6 +210,8 @@ int run(int argc, char** argv) {
       if (boolean_op) tree = operation_tree(*boolean_op, static_cast<int>(inputs.size()));
     }
     const double t_load = seconds_since(t0);
+    // The workers now, so that a refused thread is a message, not SIGABRT inside oneTBB.
+    detail::start_worker_threads(workers);
     ArrangeOptions options;
     options.classifier = classifier == "tritri" ? Classifier::Tritri : Classifier::Native;
     options.threads = workers;
@@ -278,6 +283,9 @@ int run(int argc, char** argv) {
     return 1;
   } catch (const InputError& e) {
     std::fprintf(stderr, "arrange: %s\n", e.what());
+    return 1;
+  } catch (const detail::WorkerThreadsError& e) {
+    std::fprintf(stderr, "arrange: %s (--threads sets fewer)\n", e.what());
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "arrange: error: %s\n", e.what());

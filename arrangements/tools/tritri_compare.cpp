@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <tbb/global_control.h>
 #include <tbb/info.h>
-#include <tbb/parallel_for.h>
 
 #include <chrono>
 #include <cmath>
@@ -25,6 +24,7 @@
 #include "io/standard_output.h"
 #include "support/command_line.h"
 #include "support/process_usage.h"
+#include "support/worker_threads.h"
 #include "arrangements/thread_count.h"
 
 namespace {
@@ -60,8 +60,9 @@ out_triangles, euler, orient3d_calls, orient2d_calls, ...), ratio_classify
 the pipeline without the shared load).
 
 exit status: 0 the classifiers agree, 1 they disagree (the first differences are listed),
-2 error (bad input, standard output that cannot be written, or a bad command line: unknown
-option, missing, empty or out-of-range value, option given twice).
+2 error (bad input, standard output that cannot be written, worker threads the system
+refuses, or a bad command line: unknown option, missing, empty or out-of-range value, option
+given twice).
 )";
 
 constexpr long long kMaxRepeat = 1000000, kMaxDifferences = 1000000;
@@ -140,12 +141,12 @@ int run(int argc, char** argv) {
     return std::visit([&](const auto& input) -> int {
     using M = std::conditional_t<std::is_same_v<std::decay_t<decltype(input)>, TriangleSoup>, DoubleModel, ExactModel>;
     // Start TBB's workers before timing anything, so that the first run (native) does not
-    // pay for creating them.
+    // pay for creating them, and so that a refused thread is a message (worker_threads.h).
     {
       const int workers = threads > 0 ? threads : tbb::info::default_concurrency();
       tbb::global_control limit(tbb::global_control::max_allowed_parallelism, workers);
-      std::vector<int> sink(4096);
-      tbb::parallel_for(std::size_t{0}, sink.size(), [&](std::size_t i) { sink[i] = static_cast<int>(i); });
+      detail::exit_on_worker_failure("tritri-compare", workers, 2);
+      detail::start_worker_threads(workers);
     }
     ArrangeOptions options;
     options.threads = threads;

@@ -1,17 +1,20 @@
 // tests/support/run_program.h
 //
 // Running the project's programs from a test: run_command (a shell command line, stdout
-// captured) and spawn (a program with exact arguments, no shell, stdout and stderr
-// captured, with how it ended: exit code or signal).
+// captured), spawn (a program with exact arguments, no shell, stdout and stderr captured,
+// with how it ended: exit code or signal) and spawn_limited (the same under an
+// address-space limit, with its wall time and peak resident memory).
 #pragma once
 
 #include <gtest/gtest.h>
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -82,6 +85,58 @@ inline Exit spawn(const std::string& program, const std::vector<std::string>& ar
   e.out = slurp(out);
   e.err = slurp(err);
   return e;
+}
+
+// How a program run by spawn_limited ended, and what it cost.
+struct LimitedExit {
+  Exit exit;
+  double seconds = 0;      // wall time from start to end
+  long peak_rss_kb = 0;    // its peak resident memory (wait4's ru_maxrss)
+};
+
+// spawn, with the program's address space (RLIMIT_AS) limited to address_space_bytes (a
+// memory allocation beyond it fails, as a thread stack does), measured on its own
+// (wait4). fork + exec: between them only async-signal-safe calls. The peak memory
+// includes what the calling process holds when it forks (the child starts as its copy):
+// free large buffers before measuring.
+inline LimitedExit spawn_limited(const std::string& program, const std::vector<std::string>& args,
+                                 const std::filesystem::path& dir, rlim_t address_space_bytes) {
+  std::vector<std::string> all{program};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const std::string out = (dir / "stdout.txt").string(), err = (dir / "stderr.txt").string();
+  LimitedExit r;
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const rlimit limit{address_space_bytes, address_space_bytes};
+    const int o = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int e = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (setrlimit(RLIMIT_AS, &limit) != 0 || o < 0 || e < 0 || dup2(o, 1) < 0 || dup2(e, 2) < 0) _exit(127);
+    execve(program.c_str(), argv.data(), environ);
+    _exit(127);
+  }
+  if (pid < 0) {
+    ADD_FAILURE() << "cannot start " << program;
+    return r;
+  }
+  int status = 0;
+  rusage usage{};
+  wait4(pid, &status, 0, &usage);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.peak_rss_kb = usage.ru_maxrss;
+  r.exit.exited = WIFEXITED(status);
+  r.exit.code = r.exit.exited ? WEXITSTATUS(status) : -1;
+  r.exit.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  auto slurp = [](const std::string& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  r.exit.out = slurp(out);
+  r.exit.err = slurp(err);
+  return r;
 }
 
 // Values no integer option of the tools takes: empty, signs, spaces, prefixes, suffixes,

@@ -27,7 +27,8 @@ enum class InputErrorKind {
   too_few_corners,        // a face with fewer than 3 corners
   empty_mesh,             // vertices but no faces, or an empty file of a format with a header
   too_large,              // more vertices or triangles than the pipeline's int indices allow
-                          // (or a rational coordinate with more than 100000 digits)
+                          // (or a decimal exponent beyond +-4096 where decimals are read
+                          // exactly, a CSG matrix entry of more than 100000 digits)
 };
 
 // A short stable name for the kind ("non_finite_coordinate", ...).

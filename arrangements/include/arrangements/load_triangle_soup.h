@@ -47,10 +47,11 @@
 //   Refused (InputError naming the file and line, for every loader): a zero denominator
 //   (malformed, "has a zero denominator"); a token that is neither a decimal nor the
 //   rational grammar, e.g. "1/", "/2", "1/2/3", "1.5/2", "0x1/3" (malformed, "is not a
-//   number"); a numerator or denominator of more than 100000 digits as written (too_large,
-//   "is a huge rational"); a rational whose absolute value exceeds the largest finite
-//   double (non_finite_coordinate, "is beyond the largest finite double": the pipeline
-//   needs finite bounding boxes).
+//   number"); a rational whose absolute value exceeds the largest finite double
+//   (non_finite_coordinate, "is beyond the largest finite double": the pipeline needs
+//   finite bounding boxes). A numerator or denominator may have any number of digits (its
+//   value is no larger than the file's text, and costs GMP's subquadratic conversion):
+//   what write_mesh writes with exact = true is always read back.
 //
 // Polygons: a face with corners c0 c1 ... c(n-1), n > 3, becomes the n - 2 triangles of
 // triangulate_polygon (arrangements/src/io/triangulate_polygon.h) in place of the face, so every
@@ -60,9 +61,20 @@
 // Formats: each file is read once, as a stream (1 MiB at a time), by a reader of our own
 // that validates it and fills the arrays in the same pass, so loading needs about the
 // memory of the arrays it returns (plus, for polygons, their corner lists until they are
-// triangulated at the end of the file).
+// triangulated at the end of the file, and a buffer of about 3 times the longest line).
+// Nothing is reserved from a count in a header beyond what the rest of the file can hold,
+// so a file that is not its format is refused after its first bytes (a file of NUL bytes
+// at the first one, of any size) in time and memory that do not grow with its size.
 //   Text files (OBJ, OFF, ASCII STL, the PLY header and ASCII PLY): lines end in LF, CRLF
-//   or CR; a UTF-8 byte order mark (EF BB BF) at the start of the file is skipped.
+//   or CR; a UTF-8 byte order mark (EF BB BF) at the start of the file is skipped. A NUL
+//   byte is refused (malformed, "line L: a NUL byte: ...") as soon as it is read. A line
+//   is at most 1 MiB (1048576 bytes) long, except OBJ v and f statements, OFF vertex and
+//   face records and the lines of an ASCII PLY body, whose exact rationals and polygons
+//   have no size limit: those may go on beyond their first MiB with numbers and blanks
+//   only (digits, + - . / e E, space, tab). Any other line longer than 1 MiB is refused
+//   (malformed, "line L: longer than 1048576 bytes (1 MiB)"), as is a long line with
+//   anything else after its first MiB (a comment, a letter); so are OBJ lines joined by
+//   backslashes, by the same rule.
 //   Numbers are decimal (one optional sign, digits, '.', exponent; "+-1" is refused) and
 //   fill their whole whitespace-separated token; they are rounded correctly (std::from_chars); values that
 //   underflow become the correctly rounded subnormal or zero (as strtod makes them). OBJ
@@ -80,9 +92,11 @@
 //        (or [0, 1]) after a vertex's or face's numbers, and once a vertex (face) line
 //        has colours all later vertex (face) lines need them too. Binary OFF and the ST /
 //        4 / n / SKEL variants are refused as unsupported.
-//   STL  binary when the size is exactly 84 + 50 x (the header's triangle count), else
-//        ASCII when its first word begins with "solid" (any case) and no byte is NUL,
-//        else refused (truncated or malformed). ASCII keywords (solid, facet, vertex,
+//   STL  binary when the size is exactly 84 + 50 x (the header's triangle count, checked
+//        before anything is reserved), else ASCII when its first word begins with "solid"
+//        (any case), no byte is NUL and no line exceeds 1 MiB, else refused ("neither an
+//        ASCII STL ... nor a binary STL of the right size: the binary STL size does not
+//        match its triangle count ..."; a file of NULs at its first byte). ASCII keywords (solid, facet, vertex,
 //        endfacet, endsolid) in any case; the rest of a solid or endsolid line is the
 //        solid's name, free text ("solid facet"). Corners at equal positions (exact comparison,
 //        -0.0 equals 0.0) become one vertex, in the order of first appearance.
@@ -93,7 +107,8 @@
 //
 // Throws InputError (input_error.h), naming the file and, where the format has them, the
 // line (text formats) or vertex / face / triangle number, for: a missing or unreadable
-// file, an unknown extension, a malformed or truncated file, NaN or infinite coordinates
+// file, an unknown extension, a malformed or truncated file (a NUL byte or a line too long
+// in a text file among them, above), NaN or infinite coordinates
 // (also decimals beyond the double range), out-of-range indices, faces with fewer than 3
 // corners, a file with vertices but no faces, an empty file of a format with a header (OFF,
 // STL, PLY), and more than INT_MAX vertices or triangles. A file with neither vertices nor
@@ -104,7 +119,7 @@
 // Rational coordinates are refused as listed above.
 //
 // Cost: one pass over the file, linear in its size. Rational tokens cost GMP's conversion
-// of their digits and an exact comparison; an ExactTriangleSoup costs a rational per
+// of their digits (subquadratic) and an exact comparison; an ExactTriangleSoup costs a rational per
 // coordinate (an order of magnitude more memory than a double) and exact polygon
 // triangulation.
 #pragma once

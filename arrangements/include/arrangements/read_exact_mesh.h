@@ -18,17 +18,19 @@
 // Numbers (one whitespace-free token each), as load_triangle_soup.h describes them:
 //   rational  [+-]? digits "/" digits, the denominator not zero; need not be reduced
 //   decimal   [+-]? ( digits ( "." digits? )? | "." digits ) ( [eE] [+-]? digits )?
-//   at most 100000 digits (in a numerator, a denominator or a decimal), and a decimal
-//   exponent of at most 4096 in absolute value (larger ones would make huge numbers; no
-//   double needs one). Unlike load_mesh_files, any magnitude is kept (a coordinate beyond
-//   the double range is refused there, since the pipeline needs finite boxes).
+//   any number of digits (in a numerator, a denominator or a decimal: what write_mesh
+//   writes is always read back), and a decimal exponent of at most 4096 in absolute value
+//   (larger ones would make numbers far larger than their text; no double needs one).
+//   Unlike load_mesh_files, any magnitude is kept (a coordinate beyond the double range is
+//   refused there, since the pipeline needs finite boxes). Lines: as load_triangle_soup.h
+//   describes them (NUL bytes refused; at most 1 MiB, except vertex and face lines of numbers).
 // A file without faces is returned as it is (write_mesh writes empty meshes too).
 //
 // Throws InputError (input_error.h) naming the file and the line, of the kind
 // load_mesh_files gives for the same text: unreadable_file, unknown_format (another
 // extension), unsupported_variant (e.g. OBJ "l" statements, 4OFF), malformed,
 // non_finite_coordinate ("nan", "inf"), index_out_of_range, too_few_corners, too_large
-// (too many digits, a larger exponent, more than INT_MAX vertices or triangles). Never
+// (a larger exponent, more than INT_MAX vertices or triangles). Never
 // crashes on any input.
 //
 // Exact: no rounding anywhere. Cost: linear in the file size, plus the rational arithmetic

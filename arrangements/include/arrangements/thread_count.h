@@ -11,9 +11,11 @@
 // with SIGSEGV, 2^31 - 1 fails with bad_alloc, and a global_control limit above the number
 // of cores makes oneTBB create that many OS threads (4096 on a 2-core machine: about 3500
 // threads and a second of start-up, for no speed-up). When the system refuses a thread
-// (ulimit -u, a container's pids limit), oneTBB calls std::terminate (SIGABRT) from its
-// thread-creating code, where no caller can catch it; 1024 stays far from the crash and well
-// inside common process limits, while allowing more threads than any current machine's cores.
+// (ulimit -u or -v, a container's pids limit), oneTBB calls std::terminate (SIGABRT) from
+// its thread-creating code, where no caller can catch it; 1024 stays far from the crash and
+// well inside common process limits, while allowing more threads than any current machine's
+// cores. The tools start their workers up front instead (src/support/worker_threads.h): a
+// refused thread is then "cannot start N worker threads: ..." and an error exit status.
 //
 //   parse_count(text, lo, hi): a command-line integer, strictly: one or more ASCII digits and
 //   nothing else (no sign, space, "0x" prefix or suffix), with a value in [lo, hi]

@@ -32,7 +32,8 @@
 // Exact coordinates (options.exact): each coordinate X is the rational number (to_exact()
 // of an implicit point)
 // written in lowest terms as "N/D" (N, D decimal integers, N with a '-' when negative,
-// D >= 2) or as "N" when it is an integer (D = 1). Explicit vertices are written the same
+// D >= 1) or as "N" when it is an integer that is exactly a double (a larger integer keeps
+// "/1": the loaders read a decimal as its nearest double). Explicit vertices are written the same
 // way (a double is the dyadic rational it holds, e.g. 0.1 is
 // 3602879701896397/36028797018963968). read_exact_mesh (read_exact_mesh.h) reads these
 // files back exactly, and so does load_mesh_files (load_triangle_soup.h), into an

@@ -30,6 +30,9 @@ struct Value {
 };
 
 constexpr int kMaxValueDepth = 64;  // vectors in vectors: a matrix needs 2
+// A matrix entry multiplies every coordinate of its operands: its size is bounded (a mesh
+// file's own rationals are not).
+constexpr std::size_t kMaxMatrixEntryDigits = 100000;
 
 enum class Block { top, union_of, difference, intersection, transform };
 
@@ -307,10 +310,10 @@ ExactAffine Parser::matrix(const Value& m, long line) {
     for (int c = 0; c < 4; ++c) {
       const Value& entry = row.items[c];
       if (entry.kind != CsgTokenKind::number) refuse_here(InputErrorKind::malformed, entry.line, shape);
-      const RationalParse p = parse_exact_decimal(entry.text, e[r][c], kMaxRationalDigits);
+      const RationalParse p = parse_exact_decimal(entry.text, e[r][c], kMaxMatrixEntryDigits);
       if (p == RationalParse::huge)
         refuse_here(InputErrorKind::too_large, entry.line,
-                    "multmatrix: " + detail::quoted(entry.text) + " has more than " + std::to_string(kMaxRationalDigits) +
+                    "multmatrix: " + detail::quoted(entry.text) + " has more than " + std::to_string(kMaxMatrixEntryDigits) +
                         " digits or an exponent beyond " + std::to_string(kMaxDecimalExponent));
       if (p != RationalParse::ok) refuse_here(InputErrorKind::malformed, entry.line, shape);
     }

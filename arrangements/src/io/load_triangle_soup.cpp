@@ -1,7 +1,8 @@
 // Load (before stage 1): mesh file -> TriangleSoup or ExactTriangleSoup (see
 // load_triangle_soup.h): the file is read once, as a stream, by the reader of its format
 // (read_obj.cpp, read_off.cpp, read_stl.cpp, read_ply.cpp), which validates it and fills a
-// SoupBuilder (soup_builder.cpp) in the same pass.
+// SoupBuilder (soup_builder.cpp) in the same pass. Here too: FileBytes and the slow paths
+// of LineReader (mesh_reader.h).
 #include "arrangements/load_triangle_soup.h"
 
 #include "arrangements/as_input.h"
@@ -83,6 +84,27 @@ std::size_t FileBytes::refill(std::size_t n) {
     }
   }
   return end_;
+}
+
+// Past the first kMaxLineBytes of a line (i >= kMaxLineBytes): allowed by the reader's rule
+// (asked once, at the first byte beyond them), then numbers and blanks only.
+std::size_t LineReader::find_long_line_end(const char* p, std::size_t i, std::size_t n) const {
+  for (; i < n; ++i) {
+    const char c = p[i];
+    if (is_line_end(c)) return i;
+    if (i == kMaxLineBytes && !(long_lines_ && long_lines_(std::string_view(p, kMaxLineBytes))))
+      refuse_not_text("longer than " + std::to_string(kMaxLineBytes) + " bytes (1 MiB)");
+    if (!is_number_or_blank(c))
+      refuse_not_text(c == '\0' ? std::string("a NUL byte")
+                                : "longer than " + std::to_string(kMaxLineBytes) + " bytes (1 MiB) with " +
+                                      quoted(std::string_view(&p[i], 1)) +
+                                      " after them (only numbers and blanks may follow)");
+  }
+  return n;
+}
+
+void LineReader::refuse_not_text(const std::string& problem) const {
+  refuse_at_line(InputErrorKind::malformed, in_.path(), line_ + 1, problem + ": " + not_text_);
 }
 
 }  // namespace detail

@@ -5,7 +5,9 @@
 // the same pass, so memory holds the parsed arrays plus one buffer of the file.
 //   FileBytes    the file in chunks of 1 MiB (a longer line grows the buffer); the one
 //                place where a mesh file is opened and read
-//   LineReader   lines ending in LF, CRLF or CR (a UTF-8 BOM at the start is skipped)
+//   LineReader   lines ending in LF, CRLF or CR (a UTF-8 BOM at the start is skipped);
+//                refuses bytes that are not text: a NUL byte, a line longer than
+//                kMaxLineBytes unless the reader allows long lines of numbers there
 //   TokenReader  whitespace-separated tokens across lines, with their line numbers
 //   SoupBuilder  vertices and faces; polygons are triangulated by finish(); coordinate
 //                tokens that are not decimals go to other_coordinate (exact rationals),
@@ -64,20 +66,42 @@ class FileBytes {
 
 inline bool is_line_end(char c) { return c == '\n' || c == '\r'; }
 
+// The longest line a text reader holds (1 MiB), so that a file that is not text (or not the
+// format its name says) is refused after its first MiB at most. Longer lines are read only
+// where a reader allows them (LineReader::allow_long_lines: vertex and face records, whose
+// exact rationals and polygons have no size limit), and then only numbers and blanks may
+// follow the first MiB.
+inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
+
+// A byte that may follow the first kMaxLineBytes of a long line: numbers (digits, signs,
+// '.', '/', 'e', 'E') and blanks.
+inline bool is_number_or_blank(char c) {
+  return (c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.' || c == '/' || c == 'e' || c == 'E' || c == ' ' ||
+         c == '\t' || c == '\v' || c == '\f';
+}
+
 class LineReader {
  public:
-  explicit LineReader(FileBytes& in) : in_(in) {
+  // not_text: what a file with bytes that are not text is not, for messages ("PATH: line
+  // L: a NUL byte: " + not_text).
+  explicit LineReader(FileBytes& in, std::string not_text = "not a text mesh file")
+      : in_(in), not_text_(std::move(not_text)) {
     if (in_.fill(3) >= 3 && std::string_view(in_.data(), 3) == "\xEF\xBB\xBF") in_.consume(3);
   }
+  // Whether a line may be longer than kMaxLineBytes, given its first kMaxLineBytes bytes
+  // (the rest must then be numbers and blanks). nullptr, the default: no line may.
+  using LongLineRule = bool (*)(std::string_view head);
+  void allow_long_lines(LongLineRule rule) { long_lines_ = rule; }
+
   // The next line without its end (LF, CRLF or CR; the last line may have none); false at
   // the end of the file. The view lives until the next call on this reader or its file.
+  // Refuses (malformed) a NUL byte and a line that is too long (above).
   bool next(std::string_view& line) {
     std::size_t n = in_.available();
     if (n == 0 && (n = in_.fill(1)) == 0) return false;
     std::size_t i = 0;
     for (;;) {
-      const char* p = in_.data();
-      while (i < n && !is_line_end(p[i])) ++i;
+      i = find_line_end(in_.data(), i, n);
       if (i < n) break;
       const std::size_t more = in_.fill(n + 1);
       if (more == n) {  // the last line, without an end
@@ -101,7 +125,23 @@ class LineReader {
   long line_number() const { return line_; }  // of the last line returned (1-based)
 
  private:
+  // The first line end in p[i, n) (p: the current line), or n; refuses what is not text.
+  std::size_t find_line_end(const char* p, std::size_t i, std::size_t n) const {
+    const std::size_t short_end = n < kMaxLineBytes ? n : kMaxLineBytes;
+    for (; i < short_end; ++i) {
+      const unsigned char c = static_cast<unsigned char>(p[i]);
+      if (c > '\r') continue;  // the common case: no line end, no NUL
+      if (c == '\n' || c == '\r') return i;
+      if (c == '\0') refuse_not_text("a NUL byte");
+    }
+    return i < n ? find_long_line_end(p, i, n) : n;
+  }
+  std::size_t find_long_line_end(const char* p, std::size_t i, std::size_t n) const;
+  [[noreturn]] void refuse_not_text(const std::string& problem) const;
+
   FileBytes& in_;
+  std::string not_text_;
+  LongLineRule long_lines_ = nullptr;
   long line_ = 0;
 };
 
@@ -125,7 +165,6 @@ class TokenReader {
         rest_ = {};
         return {};
       }
-      new_line(rest_);
     }
   }
   long line() const { return lines_.line_number(); }
@@ -133,23 +172,10 @@ class TokenReader {
   void skip_rest_of_line() { rest_ = {}; }
   std::size_t pending() const { return rest_.size(); }  // bytes of the current line not read yet
 
- protected:
-  virtual void new_line(std::string_view) {}  // a hook for readers that check whole lines
-  ~TokenReader() = default;
-
  private:
   LineReader& lines_;
   std::string_view rest_;
 };
-
-// A plain token reader.
-class Tokens final : public TokenReader {
- public:
-  using TokenReader::TokenReader;
-};
-
-// The most decimal digits of a rational coordinate's numerator or denominator.
-inline constexpr std::size_t kMaxRationalDigits = 100000;
 
 // The faces and vertices of one file, as its reader finds them.
 //   exact = false (load_triangle_soup): every coordinate must be a double; a rational that
@@ -190,8 +216,9 @@ class SoupBuilder {
   // (rational_token.h) that is exactly a double becomes `value` ("-0/N" is -0.0, as the
   // decimal "-0" is); another rational is kept for that vertex (exact) or refused (not
   // exact). Anything else is refused as refuse_coordinate refuses it, and so are a zero
-  // denominator, more than kMaxRationalDigits digits and |value| > DBL_MAX. `what` names
-  // the coordinate for messages ("vertex 7: coordinate ").
+  // denominator, a decimal exponent beyond kMaxDecimalExponent (decimals_exact) and
+  // |value| > DBL_MAX (not decimals_exact). Any number of digits is read: a token is no
+  // larger than its file. `what` names the coordinate for messages ("vertex 7: coordinate ").
   void other_coordinate(long line, const std::string& what, int axis, std::string_view token, RealParse r,
                         double& value);
   // corners: at least 3 (the reader checks it and the indices, before finish()).

@@ -28,7 +28,7 @@ struct ScopedMpq {
 
 }  // namespace
 
-RationalParse parse_rational(std::string_view token, CGAL::Gmpq& value, std::size_t max_digits) {
+RationalParse parse_rational(std::string_view token, CGAL::Gmpq& value) {
   bool negative = false;
   if (!token.empty() && (token.front() == '+' || token.front() == '-')) {
     negative = token.front() == '-';
@@ -39,7 +39,6 @@ RationalParse parse_rational(std::string_view token, CGAL::Gmpq& value, std::siz
   const std::string_view numerator = token.substr(0, n), denominator = token.substr(n + 1);
   const std::size_t d = digit_run(denominator);
   if (d == 0 || d != denominator.size()) return RationalParse::not_rational;
-  if (n > max_digits || d > max_digits) return RationalParse::huge;
   if (denominator.find_first_not_of('0') == std::string_view::npos) return RationalParse::zero_denominator;
   ScopedMpq r;
   // Both parts are non-empty strings of decimal digits: mpz_set_str accepts them.

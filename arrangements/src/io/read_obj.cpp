@@ -3,6 +3,7 @@
 // line (not inside a comment).
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,6 +31,13 @@ bool continues(std::string_view line) {
   return !line.empty() && line.back() == '\\' && line.find('#') == std::string_view::npos;
 }
 
+// Long lines (beyond kMaxLineBytes) are v and f statements: exact rationals and polygons
+// have no size limit.
+bool may_be_long(std::string_view head) {
+  const std::string_view keyword = LineTokens(head).next();
+  return keyword == "v" || keyword == "f";
+}
+
 // Faces may name vertices defined later in the file; those indices are checked at the end.
 // `forward` keeps, in file order, the faces whose largest forward index exceeds every
 // earlier one: the first face with an index beyond the file's vertices is among them.
@@ -40,7 +48,9 @@ struct ForwardReference {
 
 class ObjReader {
  public:
-  ObjReader(FileBytes& in, SoupBuilder& out) : path_(in.path()), lines_(in), out_(out) {}
+  ObjReader(FileBytes& in, SoupBuilder& out) : path_(in.path()), lines_(in), out_(out) {
+    lines_.allow_long_lines(may_be_long);
+  }
 
   void read() {
     std::string_view line;
@@ -57,15 +67,27 @@ class ObjReader {
   }
 
  private:
+  // The joined line, held to the rule of a physical one (LineReader): beyond kMaxLineBytes
+  // only a v or f statement, and only numbers and blanks there.
   std::string_view join_continued(std::string_view line) {
     joined_.assign(line.data(), line.size() - 1);
     std::string_view next;
     while (lines_.next(next)) {
       const bool more = continues(next);
+      const std::size_t before = joined_.size();
       joined_.append(next.data(), next.size() - (more ? 1 : 0));
+      if (joined_.size() > kMaxLineBytes) check_long_join(std::max(before, kMaxLineBytes));
       if (!more) break;
     }
     return joined_;
+  }
+  void check_long_join(std::size_t from) const {
+    const bool numbers = std::all_of(joined_.begin() + static_cast<std::ptrdiff_t>(from), joined_.end(),
+                                     [](char c) { return is_number_or_blank(c); });
+    if (!numbers || !may_be_long(std::string_view(joined_).substr(0, kMaxLineBytes)))
+      refuse_at_line(InputErrorKind::malformed, path_, lines_.line_number(),
+                     "the lines joined by backslashes are longer than " + std::to_string(kMaxLineBytes) +
+                         " bytes (1 MiB) and not a v or f statement of numbers");
   }
 
   void statement(long line, std::string_view text) {

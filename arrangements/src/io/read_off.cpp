@@ -26,6 +26,7 @@ class OffReader {
 
   void read() {
     read_header();
+    lines_.allow_long_lines([](std::string_view) { return true; });  // records of numbers: no size limit
     const std::size_t numbers_per_vertex = h_.normals ? 6 : 3;
     // Each record takes a few bytes: reserve no more than the file can hold.
     out_.vertices.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(h_.vertices, in_.remaining() / 6)));

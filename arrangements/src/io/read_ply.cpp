@@ -350,7 +350,7 @@ class BodyReader {
   FileBytes& in_;
   const std::string& path_;
   PlyFormat format_;
-  Tokens tokens_;
+  TokenReader tokens_;
 };
 
 // The fewest bytes an item of e takes (lists count as their length alone).
@@ -413,9 +413,11 @@ void read_body(FileBytes& in, LineReader& lines, const PlyHeader& h, SoupBuilder
 }  // namespace
 
 void read_ply(FileBytes& in, SoupBuilder& out) {
-  LineReader lines(in);
+  LineReader lines(in, "not a PLY file (its header is text)");
   PlyHeader h = read_header(in.path(), lines);
   assign_roles(in.path(), h);
+  // ASCII items (a list with many entries) may take more than 1 MiB; the header may not.
+  lines.allow_long_lines([](std::string_view) { return true; });
   read_body(in, lines, h, out);
 }
 

@@ -1,7 +1,9 @@
 // STL reader (see mesh_reader.h; what it accepts: load_triangle_soup.h). Binary when the
-// size is exactly 84 + 50 x (the header's triangle count), else ASCII when the first token
-// begins with "solid" (any case) and no byte is NUL. Equal corner positions (==, so -0.0
-// and 0.0 are one) become one vertex, in the order of their first appearance.
+// size is exactly 84 + 50 x (the header's triangle count; nothing is reserved before that
+// holds), else ASCII when the first token begins with "solid" (any case), no byte is NUL and
+// no line is longer than 1 MiB (so a file of NULs or of binary data is refused at its first
+// bytes). Equal corner positions (==, so -0.0 and 0.0 are one) become one vertex, in the
+// order of their first appearance.
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -71,18 +73,22 @@ class PositionIndex {
   std::size_t mask_ = 0;
 };
 
-[[noreturn]] void refuse_not_stl(const FileBytes& in, std::uint32_t declared) {
+// Why the file is not an STL: not ASCII (no 'solid', or bytes that are not text), and its
+// size does not match the triangle count of a binary header.
+std::string not_stl(const FileBytes& in, std::uint32_t declared) {
   if (in.size() >= kBinaryHeaderBytes) {
     const std::uint64_t expected = kBinaryHeaderBytes + std::uint64_t{declared} * kBinaryTriangleBytes;
-    refuse(InputErrorKind::malformed, in.path(),
-           "neither an ASCII STL (which begins with 'solid') nor a binary STL of the right size: a binary header "
-           "declaring " +
-               std::to_string(declared) + " triangles needs " + std::to_string(expected) + " bytes, the file has " +
-               std::to_string(in.size()));
+    return "neither an ASCII STL (which begins with 'solid') nor a binary STL of the right size: the binary STL "
+           "size does not match its triangle count (a header declaring " +
+           std::to_string(declared) + " triangles needs " + std::to_string(expected) + " bytes, the file has " +
+           std::to_string(in.size()) + ")";
   }
-  refuse(InputErrorKind::malformed, in.path(),
-         "not an ASCII STL (which begins with 'solid') and too short for a binary STL (" + std::to_string(in.size()) +
-             " bytes, the binary header alone has 84)");
+  return "not an ASCII STL (which begins with 'solid') and too short for a binary STL (" + std::to_string(in.size()) +
+         " bytes, the binary header alone has 84)";
+}
+
+[[noreturn]] void refuse_not_stl(const FileBytes& in, std::uint32_t declared) {
+  refuse(InputErrorKind::malformed, in.path(), not_stl(in, declared));
 }
 
 void read_binary(FileBytes& in, SoupBuilder& out, std::uint32_t n) {
@@ -114,20 +120,6 @@ void read_binary(FileBytes& in, SoupBuilder& out, std::uint32_t n) {
   }
 }
 
-// Tokens that refuse a line with a NUL byte (a binary file, not an ASCII STL).
-class StlTokens final : public TokenReader {
- public:
-  StlTokens(LineReader& lines, const FileBytes& in, std::uint32_t declared)
-      : TokenReader(lines), in_(in), declared_(declared) {}
-
- private:
-  void new_line(std::string_view line) override {
-    if (line.find('\0') != std::string_view::npos) refuse_not_stl(in_, declared_);
-  }
-  const FileBytes& in_;
-  std::uint32_t declared_;
-};
-
 bool begins_with_solid(std::string_view token) {
   return token.size() >= 5 && equals_ignoring_case(token.substr(0, 5), "solid");
 }
@@ -137,8 +129,8 @@ bool begins_with_solid(std::string_view token) {
 // line is the solid's name, free text ("solid facet" names a solid "facet").
 void read_ascii(FileBytes& in, SoupBuilder& out, std::uint32_t declared) {
   const std::string& path = in.path();
-  LineReader lines(in);
-  StlTokens tokens(lines, in, declared);
+  LineReader lines(in, not_stl(in, declared));  // refuses NUL bytes and lines beyond 1 MiB
+  TokenReader tokens(lines);
   std::string_view token = tokens.next();
   if (!begins_with_solid(token)) refuse_not_stl(in, declared);
   PositionIndex positions;

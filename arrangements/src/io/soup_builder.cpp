@@ -31,8 +31,8 @@ void SoupBuilder::other_coordinate(long line, const std::string& what, int axis,
   CGAL::Gmpq q;
   // A decimal beyond the double range is non_finite for parse_real, but has an exact value.
   RationalParse p = RationalParse::not_rational;
-  if (r != RealParse::non_finite) p = parse_rational(token, q, kMaxRationalDigits);
-  if (p == RationalParse::not_rational && decimals_exact_) p = parse_exact_decimal(token, q, kMaxRationalDigits);
+  if (r != RealParse::non_finite) p = parse_rational(token, q);
+  if (p == RationalParse::not_rational && decimals_exact_) p = parse_exact_decimal(token, q);
   switch (p) {
     case RationalParse::ok:
       break;
@@ -41,14 +41,10 @@ void SoupBuilder::other_coordinate(long line, const std::string& what, int axis,
         refuse_at_line(InputErrorKind::malformed, path_, line,
                        what + quoted(token) + " is not a number (a decimal, or a rational N/D of decimal digits)");
       refuse_coordinate(path_, line, r, what, token);
-    case RationalParse::huge:
-      if (token.find('/') == std::string_view::npos)
-        refuse_at_line(InputErrorKind::too_large, path_, line,
-                       what + quoted(token) + " is a huge decimal: more than " + std::to_string(kMaxRationalDigits) +
-                           " digits, or an exponent beyond +-" + std::to_string(kMaxDecimalExponent));
+    case RationalParse::huge:  // a decimal only: rationals have no limit
       refuse_at_line(InputErrorKind::too_large, path_, line,
-                     what + quoted(token) + " is a huge rational: its numerator or denominator has more than " +
-                         std::to_string(kMaxRationalDigits) + " digits");
+                     what + quoted(token) + " is a huge decimal: an exponent beyond +-" +
+                         std::to_string(kMaxDecimalExponent));
     case RationalParse::zero_denominator:
       refuse_at_line(InputErrorKind::malformed, path_, line, what + quoted(token) + " has a zero denominator");
   }

@@ -22,6 +22,7 @@
 #include "io/atomic_file.h"
 #include "io/mesh_file_checks.h"
 #include "io/mesh_format.h"
+#include "io/rational_token.h"
 #include "io/write_off.h"
 #include "support/vertex_coordinates.h"
 
@@ -81,10 +82,12 @@ void append_mpz(AtomicFile& f, const mpz_t z, std::string& scratch) {
   f.append(std::string_view(scratch.c_str()));
 }
 
-// Gmpq is always in lowest terms with a positive denominator.
+// Gmpq is always in lowest terms with a positive denominator. An integer that is not a
+// double keeps its "/1": the loaders read a decimal "N" as the double nearest to it.
 void append_rational(AtomicFile& f, const CGAL::Gmpq& q, std::string& scratch) {
   append_mpz(f, mpq_numref(q.mpq()), scratch);
-  if (mpz_cmp_ui(mpq_denref(q.mpq()), 1) != 0) {
+  double unused;
+  if (mpz_cmp_ui(mpq_denref(q.mpq()), 1) != 0 || !detail::exact_double(q, unused)) {
     f.append('/');
     append_mpz(f, mpq_denref(q.mpq()), scratch);
   }
