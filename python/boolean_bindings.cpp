@@ -40,6 +40,7 @@ nb::dict boolean(const std::vector<Coords>& V, const std::vector<Indices>& F, co
   std::vector<ExactVec3> exact;
   {
     nb::gil_scoped_release release;
+    const CallWorkers workers(threads);
     std::vector<Eigen::Map<const RowMajorXd>> Ve;
     std::vector<Eigen::Map<const RowMajorXl>> Fe;
     for (const Coords& v : V) Ve.push_back(as_eigen(v));
@@ -60,6 +61,7 @@ nb::dict boolean_exact(const std::vector<std::vector<std::string>>& V, const std
   arrangements::ExactEigenArrangement out;
   {
     nb::gil_scoped_release release;
+    const CallWorkers workers(threads);
     std::vector<RationalRows> Ve;
     std::vector<Eigen::Map<const RowMajorXl>> Fe;
     for (std::size_t i = 0; i < V.size(); ++i)
@@ -84,6 +86,7 @@ nb::dict csg(const std::string& path, const std::string& classifier, int threads
   {
     nb::gil_scoped_release release;
     arrangements::CsgScene scene = arrangements::load_csg_file(path);
+    const CallWorkers workers(threads);  // after the file, as the arrange tool does
     if (const auto* soup = std::get_if<arrangements::TriangleSoup>(&scene.soup))
       plain = arrangements::detail::eigen_arrangement_of(arrangements::boolean(*soup, scene.tree, options),
                                                          exact_output ? &exact : nullptr);

@@ -8,7 +8,10 @@
 #include <arrangements/thread_count.h>
 #include <tritri/implicit_point.h>
 
+#include "support/worker_threads.h"
+
 #include <gmp.h>
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
 #include <array>
@@ -180,6 +183,15 @@ nb::list fractions_of(const std::vector<ExactVec3>& rows) {
       out.append(coprime_constructor ? from_coprime(n, d) : Fraction(n, d, nb::arg("_normalize") = false));
     }
   return out;
+}
+
+namespace {
+int worker_count(int threads) { return threads > 0 ? threads : tbb::info::default_concurrency(); }
+}  // namespace
+
+CallWorkers::CallWorkers(int threads)
+    : limit_(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(worker_count(threads))) {
+  arrangements::detail::start_worker_threads(worker_count(threads));
 }
 
 arrangements::ArrangeOptions arrange_options(const std::string& classifier, int threads, const std::string& where) {

@@ -17,6 +17,8 @@
 
 #include <arrangements/arrange_eigen.h>
 
+#include <tbb/global_control.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
@@ -51,6 +53,22 @@ RationalRows rational_rows(const std::vector<std::string>& values, const std::st
 
 // Every coordinate of `rows` as a fractions.Fraction, row after row (3 per row).
 nb::list fractions_of(const std::vector<ExactVec3>& rows);
+
+// The worker threads of one call, started before the pipeline runs (construct it with the
+// GIL released, first in the call's computation, and keep it for the call): a
+// tbb::global_control of the call's thread count (threads, 0: every core) under which
+// arrangements::detail::start_worker_threads starts oneTBB's workers where a refusal can be
+// reported, as the arrange tool does (support/worker_threads.h). When the system refuses the
+// threads (ulimit -v or -u, a container's pids limit) it throws WorkerThreadsError, which the
+// module raises as tritri.ThreadError (a RuntimeError), instead of oneTBB ending the
+// interpreter with SIGABRT from a worker.
+class CallWorkers {
+ public:
+  explicit CallWorkers(int threads);
+
+ private:
+  tbb::global_control limit_;
+};
 
 // The options of the arrangement: classifier "tritri" or "native", threads checked;
 // `where` names the Python function in the messages.

@@ -3,11 +3,14 @@
 // coordinates to hexadecimal "n/d" strings, and documents the functions). Every C++
 // computation runs with the GIL released; every refused input raises ValueError
 // (std::invalid_argument, std::domain_error and arrangements::InputError are translated), so
-// bad input never takes the interpreter down. Exact coordinates come back as
-// fractions.Fraction objects (flat lists, 3 per vertex; the package shapes them).
+// bad input never takes the interpreter down; worker threads the system refuses raise
+// tritri.ThreadError (a RuntimeError; CallWorkers in module_common.h). Exact coordinates
+// come back as fractions.Fraction objects (flat lists, 3 per vertex; the package shapes them).
 // This file: classify, intersections, arrange, load_mesh and the module itself; boolean and
 // csg are in boolean_bindings.cpp, the shared conversions and result dicts in module_common.cpp.
 #include "module_common.h"
+
+#include "support/worker_threads.h"
 
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
@@ -157,6 +160,7 @@ nb::dict arrange(const Coords& V, const Indices& F, std::optional<Labels> labels
   arrangements::TriangleSoup input;  // for round_safe's last resort
   {
     nb::gil_scoped_release release;
+    const CallWorkers workers(threads);
     // Checked once, by the Eigen entry point (int64 indices and labels are range-checked
     // there before they are narrowed).
     const std::optional<LabelVector> Le = label_vector(labels);
@@ -175,6 +179,7 @@ nb::dict arrange_exact(const std::vector<std::string>& V, const Indices& F, std:
   arrangements::ExactEigenArrangement out;
   {
     nb::gil_scoped_release release;
+    const CallWorkers workers(threads);
     const RationalRows Ve = rational_rows(V, "tritri.arrange: V");
     const std::optional<LabelVector> Le = label_vector(labels);
     out = arrangements::detail::arrange_eigen_exact(Ve, as_eigen(F), options, Le ? &*Le : nullptr, "tritri.arrange");
@@ -222,6 +227,8 @@ NB_MODULE(_tritri, m) {
   using namespace tritri_python;
   m.doc() = "Exact triangle-triangle intersection classification and mesh arrangements (see tritri/__init__.py).";
 
+  // A refused worker thread (CallWorkers, module_common.h): tritri.ThreadError, a RuntimeError.
+  nb::exception<arrangements::detail::WorkerThreadsError>(m, "ThreadError", PyExc_RuntimeError);
   nb::register_exception_translator([](const std::exception_ptr& p, void*) {
     try {
       std::rethrow_exception(p);

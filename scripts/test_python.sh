@@ -2,7 +2,8 @@
 # Builds and installs the Python package with `pip install .` (scikit-build-core and
 # nanobind come from PyPI) into a virtual environment, then runs the binding tests
 # (tests/python/test_bindings.py, test_exact_io.py, test_round_safe.py,
-# test_exact_classify.py) and the Python example.
+# test_exact_classify.py, test_boolean_bindings.py, test_thread_failure.py) and the Python
+# example.
 # Environment: JOBS (parallel compile jobs, default: number of cores), PYTHON (interpreter
 # for the venv, default python3), TRITRI_PY_VENV (venv, default build-python/venv).
 # The CMake build directory build-python/wheel is kept, so a rerun recompiles only what
@@ -27,10 +28,11 @@ echo "pip install took $((SECONDS - start)) s"
 # Run outside the checkout so that `import tritri` can only mean the installed package.
 cd "$ROOT/build-python"
 export PYTHONDONTWRITEBYTECODE=1
-echo "=== pytest tests/python/test_bindings.py test_exact_io.py test_round_safe.py test_exact_classify.py test_boolean_bindings.py"
+echo "=== pytest tests/python/test_bindings.py test_exact_io.py test_round_safe.py test_exact_classify.py test_boolean_bindings.py test_thread_failure.py"
 "$VENV/bin/python" -m pytest -q -p no:cacheprovider "$ROOT/tests/python/test_bindings.py" \
   "$ROOT/tests/python/test_exact_io.py" "$ROOT/tests/python/test_round_safe.py" \
-  "$ROOT/tests/python/test_exact_classify.py" "$ROOT/tests/python/test_boolean_bindings.py"
+  "$ROOT/tests/python/test_exact_classify.py" "$ROOT/tests/python/test_boolean_bindings.py" \
+  "$ROOT/tests/python/test_thread_failure.py"
 echo "=== examples/python/arrange_example.py"
 "$VENV/bin/python" "$ROOT/examples/python/arrange_example.py" "$ROOT/build-python/two_cubes.off"
 echo "=== python tests passed"

@@ -51,6 +51,12 @@ convention) and a ValueError (so `except ValueError` catches every refused input
 OverflowError and MemoryError are never raised for argument values; only a mesh too large
 for the machine's memory can raise MemoryError. The C++ work runs without the GIL.
 
+ThreadError (a RuntimeError): arrange, boolean and csg start their worker threads (threads,
+0: one per core) before any work, and raise ThreadError, "cannot start N worker threads:
+REASON", when the system refuses them (ulimit -v or -u, a container's pids limit) instead
+of the interpreter being killed (SIGABRT in oneTBB); a smaller threads value may succeed.
+The command-line tools exit 1 with the same message.
+
 MAX_THREADS (1024): the largest thread count arrange accepts, the same as the command-line
 tools' --threads (arrangements/thread_count.h explains why there is a cap).
 """
@@ -64,7 +70,7 @@ from fractions import Fraction as _Fraction
 
 import numpy as _np
 
-from ._tritri import MAX_THREADS, Result
+from ._tritri import MAX_THREADS, Result, ThreadError
 from ._tritri import arrange as _arrange
 from ._tritri import arrange_exact as _arrange_exact
 from ._tritri import boolean as _boolean
@@ -80,8 +86,8 @@ from ._tritri import self_intersections_exact as _self_intersections_exact
 from ._tritri import _stats_key_list
 from ._load_path import load_mesh_file as _load_mesh_file
 
-__all__ = ["Result", "ArgumentTypeError", "MAX_THREADS", "classify", "self_intersections", "intersections",
-           "arrange", "load_mesh", "boolean", "csg", "BOOLEAN_OPS"]
+__all__ = ["Result", "ArgumentTypeError", "ThreadError", "MAX_THREADS", "classify", "self_intersections",
+           "intersections", "arrange", "load_mesh", "boolean", "csg", "BOOLEAN_OPS"]
 __version__ = "0.1.0"
 
 
@@ -416,8 +422,9 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None
                   is read from a file):
 {stats_keys}
     Raises RuntimeError when rounding="safe" does not converge (see round_mesh.h; the
-    exact output is always available), and ValueError for refused input (see the module's
-    documentation): an unknown rounding, exact_output=True with rounding="safe", a
+    exact output is always available), ThreadError (a RuntimeError) when the system
+    refuses the worker threads (a smaller threads value may succeed), and ValueError for
+    refused input (see the module's documentation): an unknown rounding, exact_output=True with rounding="safe", a
     round_max_move that is not a finite number above 0 (or given without rounding="safe"), a threads value
     outside 0..MAX_THREADS, an unknown classifier, an index or label out of range, NaN or
     infinite coordinates, a coordinate beyond the float64 range (also exact ones: |x| >
@@ -566,7 +573,8 @@ def boolean(meshes, op="union", *, exact=None, rounding="nearest", round_max_mov
     Raises ValueError for an op not in BOOLEAN_OPS, no operand, an entry that is not a
     (V, F) pair, refused arrays (as arrange, the message naming meshes[i]), and an operand
     that is not closed ("... operand 1 is not closed: ..."); RuntimeError when
-    rounding="safe" does not converge; ArgumentTypeError for arguments of the wrong type.
+    rounding="safe" does not converge; ThreadError (a RuntimeError) when the system refuses
+    the worker threads; ArgumentTypeError for arguments of the wrong type.
     """
     f = "boolean"
     if not isinstance(op, str):
