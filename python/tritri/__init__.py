@@ -64,7 +64,6 @@ tools' --threads (arrangements/thread_count.h explains why there is a cap).
 import math as _math
 import numbers as _numbers
 import operator as _operator
-import os as _os
 import sys as _sys
 from fractions import Fraction as _Fraction
 
@@ -73,18 +72,13 @@ import numpy as _np
 from ._tritri import MAX_THREADS, Result, ThreadError
 from ._tritri import arrange as _arrange
 from ._tritri import arrange_exact as _arrange_exact
-from ._tritri import boolean as _boolean
-from ._tritri import boolean_exact as _boolean_exact
-from ._tritri import csg as _csg
 from ._tritri import classify as _classify
 from ._tritri import classify_exact as _classify_exact
 from ._tritri import intersections as _intersections
 from ._tritri import intersections_exact as _intersections_exact
-from ._tritri import load_mesh as _load_mesh
 from ._tritri import self_intersections as _self_intersections
 from ._tritri import self_intersections_exact as _self_intersections_exact
 from ._tritri import _stats_key_list
-from ._load_path import load_mesh_file as _load_mesh_file
 
 __all__ = ["Result", "ArgumentTypeError", "ThreadError", "MAX_THREADS", "classify", "self_intersections",
            "intersections", "arrange", "load_mesh", "boolean", "csg", "BOOLEAN_OPS"]
@@ -484,151 +478,6 @@ if arrange.__doc__:  # None under python -OO
     arrange.__doc__ = arrange.__doc__.replace("{stats_keys}", _stats_key_list(18, 39, 94).rstrip("\n"))
 
 
-def load_mesh(path, exact=False):
-    """Reads a mesh file with the pipeline's loader (the same one `arrange` uses).
-
-    path: an .obj, .off, .stl or .ply file (ASCII or binary). Polygons are triangulated as
-    by the loader (in their plane when simple, else the fan from the first corner);
-    vertices are not merged (arrange merges them exactly). OBJ and OFF coordinates may be
-    rationals "n/d" (as `arrange --exact` writes them), read exactly.
-    exact: False (default) or True.
-    Returns a dict with V and F (m x 3 int64). V is n x 3 float64 when every coordinate is
-    a float64 and exact is False; otherwise an n x 3 object array of fractions.Fraction,
-    every coordinate exactly (decimals as their correctly rounded float64, rationals as
-    written). Either V goes to arrange as it is (exact V runs the exact pipeline).
-    Any path the system takes is read (also names that are not UTF-8: bytes, os.fsdecode's str).
-    A missing, unreadable or malformed file, NaN/Inf coordinates, rationals beyond the
-    float64 range or with a zero denominator, or out-of-range indices raise ValueError; a
-    path that is not str, bytes or os.PathLike, or exact that is not a bool, raises
-    ArgumentTypeError.
-    """
-    try:
-        raw = _os.fsencode(path)  # str, bytes or os.PathLike: the bytes the system takes
-    except TypeError:
-        raise ArgumentTypeError(f"tritri.load_mesh: path must be a str, bytes or os.PathLike, "
-                                f"got {_describe(path)}") from None
-    if not isinstance(exact, (bool, _np.bool_)):
-        raise ArgumentTypeError(f"tritri.load_mesh: exact must be True or False, got {_describe(exact)}")
-    if b"\0" in raw:
-        raise ValueError("tritri.load_mesh: the path contains a NUL character")
-    out = _load_mesh_file(raw, _load_mesh)
-    if "V_exact" in out:
-        V = _fraction_rows(out["V_exact"])
-    elif exact:
-        V = _fraction_rows([_Fraction(x) for x in out["V"].ravel().tolist()])
-    else:
-        V = out["V"]
-    return {"V": V, "F": out["F"]}
-
-
-BOOLEAN_OPS = ("union", "intersection", "difference", "xor")
-
-
-def _boolean_options(function, exact, rounding, round_max_move, classifier, threads):
-    """The checked common arguments of boolean and csg: (safe, max_move kwargs, threads)."""
-    if exact is not None and not isinstance(exact, (bool, _np.bool_)):
-        raise ArgumentTypeError(f"tritri.{function}: exact must be None, True or False, got {_describe(exact)}")
-    if not isinstance(classifier, str):
-        raise ArgumentTypeError(f"tritri.{function}: classifier must be 'tritri' or 'native', "
-                                f"got {_describe(classifier)}")
-    if not isinstance(rounding, str):
-        raise ArgumentTypeError(f"tritri.{function}: rounding must be 'nearest' or 'safe', got {_describe(rounding)}")
-    if rounding not in ("nearest", "safe"):
-        raise ValueError(f"tritri.{function}: rounding must be 'nearest' or 'safe', got {rounding!r}")
-    safe = rounding == "safe"
-    if safe and exact:
-        raise ValueError(f"tritri.{function}: exact=True and rounding='safe' exclude each other "
-                         "(the safely rounded mesh is float64)")
-    return safe, _round_max_move(round_max_move, safe, function), _thread_count(threads, function)
-
-
-def _shape_exact(out, want_exact):
-    """out with V_exact as an n x 3 Fraction array when want_exact, else without it."""
-    if "V_exact" in out:
-        exact = out.pop("V_exact")
-        if want_exact:
-            out["V_exact"] = _fraction_rows(exact)
-    return out
-
-
-def boolean(meshes, op="union", *, exact=None, rounding="nearest", round_max_move=None, classifier="tritri",
-            threads=0):
-    """The exact Boolean of closed meshes (arrangements/boolean.h): their arrangement, then
-    the triangles bounding the result, oriented outwards.
-
-    meshes: a non-empty list (or tuple) of (V, F) pairs, operand i = meshes[i] (label i);
-    V and F as for arrange (V float64 or exact values; F m x 3 vertex indices into that
-    operand's V). Every operand must be closed (each edge used as often in one direction
-    as in the other); a point is inside operand i where its winding number is not zero.
-    op: "union", "intersection", "difference" (the first minus all others) or "xor"
-    (inside an odd number), over the operands in order.
-    exact, rounding, round_max_move, classifier, threads: as arrange's exact_output,
-    rounding, round_max_move, classifier and threads (exact=None: V_exact when some
-    operand is exact input; when some value is not exactly a float64, the exact pipeline
-    runs).
-    Returns the dict of arrange for the boundary of the result: V, V_is_exact, (V_exact),
-    F, source (the row of the concatenation of the operands' F, operand 0's rows first),
-    label_set / label_sets (the operands covering each triangle), stats. An empty result
-    (e.g. disjoint operands intersected) has no triangle.
-    Raises ValueError for an op not in BOOLEAN_OPS, no operand, an entry that is not a
-    (V, F) pair, refused arrays (as arrange, the message naming meshes[i]), and an operand
-    that is not closed ("... operand 1 is not closed: ..."); RuntimeError when
-    rounding="safe" does not converge; ThreadError (a RuntimeError) when the system refuses
-    the worker threads; ArgumentTypeError for arguments of the wrong type.
-    """
-    f = "boolean"
-    if not isinstance(op, str):
-        raise ArgumentTypeError(f"tritri.boolean: op must be one of {', '.join(BOOLEAN_OPS)}, got {_describe(op)}")
-    if op not in BOOLEAN_OPS:
-        raise ValueError(f"tritri.boolean: op must be one of {', '.join(BOOLEAN_OPS)}, got {op!r}")
-    safe, max_move, threads = _boolean_options(f, exact, rounding, round_max_move, classifier, threads)
-    if isinstance(meshes, (str, bytes, dict)) or not hasattr(meshes, "__len__"):
-        raise ArgumentTypeError(f"tritri.boolean: meshes must be a list of (V, F) pairs, got {_describe(meshes)}")
-    meshes = list(meshes)
-    if not meshes:
-        raise ValueError("tritri.boolean: meshes is empty (no operand)")
-    Vs, Fs, exact_input = [], [], False
-    for i, mesh in enumerate(meshes):
-        try:
-            V, F = mesh
-        except (TypeError, ValueError):
-            raise ValueError(f"tritri.boolean: meshes[{i}] must be a (V, F) pair, got {_describe(mesh)}") from None
-        name = f"meshes[{i}] V"
-        values, fraction = _coordinates(V, name, f, _n_by_3(name, f))
-        exact_input = exact_input or fraction or isinstance(values, list)
-        Vs.append(values if isinstance(values, list) else _vertices(values, name, f))
-        Fs.append(_faces(F, f"meshes[{i}] F", f))
-    want_exact = exact_input if exact is None else bool(exact)
-    if any(isinstance(V, list) for V in Vs):
-        out = _boolean_exact([_hex_rationals(V) for V in Vs], Fs, op, classifier, threads, safe, **max_move)
-    else:
-        out = _boolean(Vs, Fs, op, classifier, threads, want_exact and not safe, safe, **max_move)
-    return _shape_exact(out, want_exact)
-
-
-def csg(path, *, exact=None, rounding="nearest", round_max_move=None, classifier="tritri", threads=0):
-    """Evaluates an OpenSCAD .csg file over mesh files exactly (arrangements/load_csg.h: the
-    subset of union, difference, intersection, group, multmatrix and import; operand i is
-    the i-th import, transforms applied in rational arithmetic) with boolean's rules.
-
-    path: a str, bytes or os.PathLike; exact, rounding, round_max_move, classifier,
-    threads: as for boolean (exact=None: V_exact when some transformed coordinate is not a
-    float64, then the exact pipeline runs). Returns boolean's dict.
-    Raises ValueError for an unreadable or malformed .csg file or operand (the message
-    names the file and line) and for an operand that is not closed; the rest as boolean.
-    """
-    f = "csg"
-    try:
-        raw = _os.fsencode(path)
-    except TypeError:
-        raise ArgumentTypeError(f"tritri.csg: path must be a str, bytes or os.PathLike, "
-                                f"got {_describe(path)}") from None
-    safe, max_move, threads = _boolean_options(f, exact, rounding, round_max_move, classifier, threads)
-    if b"\0" in raw:
-        raise ValueError("tritri.csg: the path contains a NUL character")
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError:
-        raise ValueError("tritri.csg: the path is not UTF-8 (not supported for .csg files)") from None
-    out = _csg(text, classifier, threads, bool(exact) and not safe, safe, **max_move)
-    return _shape_exact(out, bool(exact) or (exact is None and "V_exact" in out))
+# load_mesh (_load_mesh.py), boolean and csg (_booleans.py), on the helpers above.
+from ._load_mesh import load_mesh  # noqa: E402
+from ._booleans import BOOLEAN_OPS, boolean, csg  # noqa: E402
