@@ -152,7 +152,7 @@ nb::dict safely_rounded_dict(Out&& out, int threads, double max_move_relative,
   }
   plain.label_sets = std::move(rounded.label_sets);
   plain.stats = out.stats;
-  add_round_report(report, plain.stats);
+  add_round_report(report, rounded, plain.stats);
   std::vector<double> v(3 * rounded.vertices.size());
   for (std::size_t i = 0; i < rounded.vertices.size(); ++i)
     for (int c = 0; c < 3; ++c) v[3 * i + c] = rounded.vertices[i][c];

@@ -261,6 +261,14 @@ TEST(ArrangeCli, RoundSafeWritesAMeshThatIsAnArrangement) {
   for (const char* zero : {"\"lpi\": 0,", "\"tpi\": 0,", "\"intersecting_pairs\": 0,", "\"merged_vertices\": 0,",
                            "\"removed_degenerate\": 0,", "\"round_passes\": 0,"})
     EXPECT_NE(again.out.find(zero), std::string::npos) << zero << ": " << again.out;
+  // --stats under --round safe counts the mesh written (issue 38): what reading it finds.
+  auto count = [](const std::string& json, const std::string& key) {
+    std::smatch m;
+    EXPECT_TRUE(std::regex_search(json, m, std::regex("\"" + key + "\": ([0-9]+)"))) << key;
+    return m.empty() ? std::string() : m[1].str();
+  };
+  EXPECT_EQ(count(r.out, "out_triangles"), count(again.out, "in_triangles"));
+  EXPECT_EQ(count(r.out, "out_vertices"), count(again.out, "out_vertices"));
 
   ASSERT_EQ(run(in + " -o " + near).status, 0);
   const CliRun near_again = run(near + " --stats");

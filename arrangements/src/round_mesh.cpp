@@ -2,6 +2,8 @@
 // doubles; round_safe runs the ladder of steps of round_ladder.h.
 #include "arrangements/round_mesh.h"
 
+#include "support/mesh_counts.h"
+
 #include <limits>
 
 #include "round_ladder.h"
@@ -29,6 +31,22 @@ RoundedMesh round_safe(const OutputMesh& mesh, const RoundSafeOptions& options, 
 RoundedMesh round_safe(const ExactOutputMesh& mesh, const RoundSafeOptions& options, RoundReport* report) {
   return Ladder<ExactOutputMesh>(mesh, options, std::numeric_limits<double>::infinity(), 0, detail::kLevels)
       .run(report);
+}
+
+void add_round_report(const RoundReport& report, const RoundedMesh& written, ArrangeStats& stats) {
+  stats.round_passes = report.passes;
+  stats.round_max_move = report.max_move;
+  stats.round_max_move_rel = report.max_move_relative;
+  stats.round_coarsened = report.coarsened;
+  stats.round_rerouted = report.rerouted;
+  stats.round_merged_input = report.merged_input;
+  stats.round_snapped_vertices = report.snapped_vertices;
+  stats.round_nudged = report.nudged;
+  const MeshCounts c = mesh_counts(written.triangles);
+  stats.out_vertices = c.vertices;
+  stats.out_edges = c.edges;
+  stats.out_triangles = c.triangles;
+  stats.euler = c.euler;
 }
 
 }  // namespace arrangements

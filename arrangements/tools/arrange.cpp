@@ -252,7 +252,7 @@ int run(int argc, char** argv) {
                 return 4;
               }
             }
-            add_round_report(report, s);
+            add_round_report(report, *rounded, s);
             add_write_time(s, seconds_since(tr));
           }
           if (output) {

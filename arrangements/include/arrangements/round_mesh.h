@@ -200,17 +200,10 @@ struct RoundReport {
                                     // message gives it too. 0 when settled.
 };
 
-// The report's figures in `stats` (the round_* keys of arrange_stats.h).
-inline void add_round_report(const RoundReport& report, ArrangeStats& stats) {
-  stats.round_passes = report.passes;
-  stats.round_max_move = report.max_move;
-  stats.round_max_move_rel = report.max_move_relative;
-  stats.round_coarsened = report.coarsened;
-  stats.round_rerouted = report.rerouted;
-  stats.round_merged_input = report.merged_input;
-  stats.round_snapped_vertices = report.snapped_vertices;
-  stats.round_nudged = report.nudged;
-}
+// The report's figures in `stats` (the round_* keys of arrange_stats.h), and the counts of
+// the mesh that is written (out_vertices, out_edges, out_triangles, euler: the rounded
+// mesh's, not the exact arrangement's). O(#F + #V).
+void add_round_report(const RoundReport& report, const RoundedMesh& written, ArrangeStats& stats);
 
 struct RoundingError : std::runtime_error {
   using std::runtime_error::runtime_error;
