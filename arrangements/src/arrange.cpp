@@ -19,6 +19,7 @@
 #include "models/exact_model.h"
 #include "stages/1_preprocess.h"
 #include "stages/2_candidate_pairs.h"
+#include "stages/2_coplanar_budget.h"
 #include "stages/3_classify_pairs.h"
 #include "stages/4_intersection_graph.h"
 #include "stages/5_triangulate.h"
@@ -80,6 +81,7 @@ Result run_stages(const BasicTriangleSoup<typename M::Input>& input, const Arran
   BasicDetectedPairs<M> detected = detect_pairs<M>(soup.vertices, soup.triangles, workers, soup.polygon);
   s.candidate_pairs = detected.box_pairs;
   s.classified_pairs = detected.pairs.size();
+  refuse_huge_coplanar_clusters<M>(soup.vertices, soup.triangles, detected.pairs, detected.planes);
   s.t_detect_s = seconds_since(t0);
 
   // Stages 3 and 4 (timed together as "classify"): classify every candidate pair, then

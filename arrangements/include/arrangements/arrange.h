@@ -25,7 +25,11 @@
 // The stages themselves are internal (arrangements/src/stages/, in the order they run;
 // docs/ARCHITECTURE.md describes each one's contract).
 // A soup with no triangle left after preprocessing (all degenerate, or none at all) is
-// valid: its arrangement is empty. Valid input is never refused.
+// valid: its arrangement is empty. Valid input is never refused, with one documented
+// exception: a cluster of coplanar triangles that pairwise may overlap in more than
+// 1,000,000 triples (thousands of overlapping coplanar wedges, the fan of a self-intersecting
+// polygon face of thousands of corners) throws InputError (too_large) after stage 2, before
+// its arrangement's cubic cost and memory (arrangements/src/arrange.cpp, issue 36).
 // Exact throughout; deterministic for any number of threads.
 #pragma once
 

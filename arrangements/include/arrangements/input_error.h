@@ -28,7 +28,8 @@ enum class InputErrorKind {
   empty_mesh,             // vertices but no faces, or an empty file of a format with a header
   too_large,              // more vertices or triangles than the pipeline's int indices allow
                           // (or a decimal exponent beyond +-4096 where decimals are read
-                          // exactly, a CSG matrix entry of more than 100000 digits)
+                          // exactly, a CSG matrix entry of more than 100000 digits, a
+                          // coplanar cluster beyond arrange()'s budget: arrange.h)
 };
 
 // A short stable name for the kind ("non_finite_coordinate", ...).

@@ -23,7 +23,11 @@
 // lifting of that 2D triangulation (triangles may fold, never cross each other).
 // Otherwise (the projection self-intersects, touches itself or repeats a corner), the
 // documented fallback is the fan from the first corner, (c0, c_i, c_(i+1)) for
-// i = 1 .. n-2. Triangles (n = 3) are appended as they are.
+// i = 1 .. n-2. Triangles (n = 3) are appended as they are. The fan's triangles of a
+// self-intersecting face overlap each other (a star of n corners: all of them), so
+// arrange() arranges them as a coplanar cluster, and refuses one of more than its budget of
+// overlapping triples (arrange.h; a star face of about 180 corners or more) with an
+// InputError instead of running out of memory (issue 36).
 //
 // Exactness: the decision "simple or not" and every orientation used by the triangulation
 // are exact predicates (no rounding decides anything): for doubles tritri::orient2d and
