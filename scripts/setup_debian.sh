@@ -8,6 +8,7 @@ PACKAGES=(
   build-essential cmake ninja-build
   libcgal-dev libeigen3-dev libtbb-dev libgmp-dev libmpfr-dev libboost-dev
   googletest libgtest-dev libbenchmark-dev
+  clang libclang-rt-dev  # libFuzzer and the sanitizers for scripts/fuzz.sh
   python3 python3-pip python3-venv python3-dev
 )
 
