@@ -304,6 +304,26 @@ def _round_max_move(value, safe, function="arrange"):
     return {"round_max_move": x}
 
 
+def _pipeline_options(function, exact_name, exact, rounding, round_max_move, classifier, threads):
+    """The checked arguments that arrange, boolean and csg share: (safe, max_move kwargs,
+    threads); exact_name is the name of the caller's exact-output flag."""
+    if exact is not None and not isinstance(exact, (bool, _np.bool_)):
+        raise ArgumentTypeError(f"tritri.{function}: {exact_name} must be None, True or False, "
+                                f"got {_describe(exact)}")
+    if not isinstance(classifier, str):
+        raise ArgumentTypeError(f"tritri.{function}: classifier must be 'tritri' or 'native', "
+                                f"got {_describe(classifier)}")
+    if not isinstance(rounding, str):
+        raise ArgumentTypeError(f"tritri.{function}: rounding must be 'nearest' or 'safe', got {_describe(rounding)}")
+    if rounding not in ("nearest", "safe"):
+        raise ValueError(f"tritri.{function}: rounding must be 'nearest' or 'safe', got {rounding!r}")
+    safe = rounding == "safe"
+    if safe and exact:
+        raise ValueError(f"tritri.{function}: {exact_name}=True and rounding='safe' exclude each other "
+                         "(the safely rounded mesh is float64)")
+    return safe, _round_max_move(round_max_move, safe, function), _thread_count(threads, function)
+
+
 def classify(a, b):
     """Classifies exactly how triangles a and b intersect.
 
@@ -428,22 +448,8 @@ def arrange(V, F, labels=None, classifier="tritri", threads=0, exact_output=None
     entries that are not real numbers.
     """
     f = "arrange"
-    if exact_output is not None and not isinstance(exact_output, (bool, _np.bool_)):
-        raise ArgumentTypeError(f"tritri.arrange: exact_output must be None, True or False, "
-                                f"got {_describe(exact_output)}")
-    if not isinstance(classifier, str):
-        raise ArgumentTypeError(f"tritri.arrange: classifier must be 'tritri' or 'native', "
-                                f"got {_describe(classifier)}")
-    if not isinstance(rounding, str):
-        raise ArgumentTypeError(f"tritri.arrange: rounding must be 'nearest' or 'safe', got {_describe(rounding)}")
-    if rounding not in ("nearest", "safe"):
-        raise ValueError(f"tritri.arrange: rounding must be 'nearest' or 'safe', got {rounding!r}")
-    safe = rounding == "safe"
-    if safe and exact_output:
-        raise ValueError("tritri.arrange: exact_output=True and rounding='safe' exclude each other "
-                         "(the safely rounded mesh is float64)")
-    max_move = _round_max_move(round_max_move, safe)
-    threads = _thread_count(threads)
+    safe, max_move, threads = _pipeline_options(f, "exact_output", exact_output, rounding, round_max_move,
+                                                classifier, threads)
     Fa = _faces(F, "F", f)
     la = None
     if labels is not None:

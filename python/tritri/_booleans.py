@@ -4,33 +4,14 @@ helpers of tritri/__init__.py (which imports this module once those are defined)
 
 import os as _os
 
-import numpy as _np
-
-from . import (ArgumentTypeError, _describe, _round_max_move, _thread_count, _coordinates, _n_by_3, _vertices, _faces, _hex_rationals, _fraction_rows)  # noqa: F401
+from . import (ArgumentTypeError, _coordinates, _describe, _faces, _fraction_rows,  # noqa: F401
+               _hex_rationals, _n_by_3, _pipeline_options, _vertices)
 from ._tritri import boolean as _boolean
 from ._tritri import boolean_exact as _boolean_exact
 from ._tritri import csg as _csg
 
 
 BOOLEAN_OPS = ("union", "intersection", "difference", "xor")
-
-
-def _boolean_options(function, exact, rounding, round_max_move, classifier, threads):
-    """The checked common arguments of boolean and csg: (safe, max_move kwargs, threads)."""
-    if exact is not None and not isinstance(exact, (bool, _np.bool_)):
-        raise ArgumentTypeError(f"tritri.{function}: exact must be None, True or False, got {_describe(exact)}")
-    if not isinstance(classifier, str):
-        raise ArgumentTypeError(f"tritri.{function}: classifier must be 'tritri' or 'native', "
-                                f"got {_describe(classifier)}")
-    if not isinstance(rounding, str):
-        raise ArgumentTypeError(f"tritri.{function}: rounding must be 'nearest' or 'safe', got {_describe(rounding)}")
-    if rounding not in ("nearest", "safe"):
-        raise ValueError(f"tritri.{function}: rounding must be 'nearest' or 'safe', got {rounding!r}")
-    safe = rounding == "safe"
-    if safe and exact:
-        raise ValueError(f"tritri.{function}: exact=True and rounding='safe' exclude each other "
-                         "(the safely rounded mesh is float64)")
-    return safe, _round_max_move(round_max_move, safe, function), _thread_count(threads, function)
 
 
 def _shape_exact(out, want_exact):
@@ -72,7 +53,7 @@ def boolean(meshes, op="union", *, exact=None, rounding="nearest", round_max_mov
         raise ArgumentTypeError(f"tritri.boolean: op must be one of {', '.join(BOOLEAN_OPS)}, got {_describe(op)}")
     if op not in BOOLEAN_OPS:
         raise ValueError(f"tritri.boolean: op must be one of {', '.join(BOOLEAN_OPS)}, got {op!r}")
-    safe, max_move, threads = _boolean_options(f, exact, rounding, round_max_move, classifier, threads)
+    safe, max_move, threads = _pipeline_options(f, "exact", exact, rounding, round_max_move, classifier, threads)
     if isinstance(meshes, (str, bytes, dict)) or not hasattr(meshes, "__len__"):
         raise ArgumentTypeError(f"tritri.boolean: meshes must be a list of (V, F) pairs, got {_describe(meshes)}")
     meshes = list(meshes)
@@ -114,7 +95,7 @@ def csg(path, *, exact=None, rounding="nearest", round_max_move=None, classifier
     except TypeError:
         raise ArgumentTypeError(f"tritri.csg: path must be a str, bytes or os.PathLike, "
                                 f"got {_describe(path)}") from None
-    safe, max_move, threads = _boolean_options(f, exact, rounding, round_max_move, classifier, threads)
+    safe, max_move, threads = _pipeline_options(f, "exact", exact, rounding, round_max_move, classifier, threads)
     if b"\0" in raw:
         raise ValueError("tritri.csg: the path contains a NUL character")
     try:

@@ -172,20 +172,10 @@ void set_eigen_faces(Out& out, Mesh& mesh, ArrangeStats& stats) {
   out.stats = std::move(stats);
 }
 
-// arrange() below for any Eigen matrix types (the Python module passes int64 indices and
-// labels: they are range-checked before they are narrowed). exact (optional): receives
-// tritri::to_exact of every output vertex (computed once, also for V_is_exact). input
-// (optional): receives the soup arranged (round_safe's RoundSafeOptions::input), built once.
-template <class DV, class DF, class DL>
-EigenArrangement arrange_eigen(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<DF>& F,
-                               const ArrangeOptions& options, const Eigen::MatrixBase<DL>* labels,
-                               const std::string& where, std::vector<ExactVec3>* exact = nullptr,
-                               TriangleSoup* input = nullptr) {
-  TriangleSoup soup = eigen_soup(V, F, labels, where);
-  ArrangeResult result = arrange_validated(soup, options);
-  if (input) *input = std::move(soup);
+// The EigenArrangement of a double-path result (arrange_eigen, and the Booleans of boolean_eigen.h). exact
+// (optional): receives tritri::to_exact of every output vertex.
+inline EigenArrangement eigen_arrangement_of(ArrangeResult&& result, std::vector<ExactVec3>* exact = nullptr) {
   OutputMesh& mesh = result.mesh;
-
   EigenArrangement out;
   const auto nv = static_cast<Eigen::Index>(mesh.vertices.size());
   out.V.resize(nv, 3);
@@ -195,7 +185,7 @@ EigenArrangement arrange_eigen(const Eigen::MatrixBase<DV>& V, const Eigen::Matr
     exact->resize(mesh.vertices.size());
   }
   tbb::parallel_for(Eigen::Index{0}, nv, [&](Eigen::Index v) {
-    const tritri::ImplicitPoint& p = mesh.vertices[v];
+    const tritri::ImplicitPoint& p = mesh.vertices[static_cast<std::size_t>(v)];
     const std::array<double, 3> x = tritri::to_double(p);
     bool is_exact = true;
     if (!p.is_explicit() || exact) {
@@ -211,12 +201,8 @@ EigenArrangement arrange_eigen(const Eigen::MatrixBase<DV>& V, const Eigen::Matr
   return out;
 }
 
-// The exact overload of arrange() below for any Eigen matrix types (as arrange_eigen).
-template <class DV, class DF, class DL>
-ExactEigenArrangement arrange_eigen_exact(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<DF>& F,
-                                          const ArrangeOptions& options, const Eigen::MatrixBase<DL>* labels,
-                                          const std::string& where) {
-  ExactArrangeResult result = arrange_validated(exact_eigen_soup(V, F, labels, where), options);
+// The ExactEigenArrangement of an exact-path result.
+inline ExactEigenArrangement exact_eigen_arrangement_of(ExactArrangeResult&& result) {
   ExactOutputMesh& mesh = result.mesh;
   ExactEigenArrangement out;
   out.V.resize(static_cast<Eigen::Index>(mesh.vertices.size()), 3);
@@ -224,6 +210,29 @@ ExactEigenArrangement arrange_eigen_exact(const Eigen::MatrixBase<DV>& V, const 
     for (int c = 0; c < 3; ++c) out.V(static_cast<Eigen::Index>(v), c) = std::move(mesh.vertices[v][c]);
   set_eigen_faces(out, mesh, result.stats);
   return out;
+}
+
+// arrange() below for any Eigen matrix types (the Python module passes int64 indices and
+// labels: they are range-checked before they are narrowed). exact (optional): receives
+// tritri::to_exact of every output vertex (computed once, also for V_is_exact). input
+// (optional): receives the soup arranged (round_safe's RoundSafeOptions::input), built once.
+template <class DV, class DF, class DL>
+EigenArrangement arrange_eigen(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<DF>& F,
+                               const ArrangeOptions& options, const Eigen::MatrixBase<DL>* labels,
+                               const std::string& where, std::vector<ExactVec3>* exact = nullptr,
+                               TriangleSoup* input = nullptr) {
+  TriangleSoup soup = eigen_soup(V, F, labels, where);
+  ArrangeResult result = arrange_validated(soup, options);
+  if (input) *input = std::move(soup);
+  return eigen_arrangement_of(std::move(result), exact);
+}
+
+// The exact overload of arrange() below for any Eigen matrix types (as arrange_eigen).
+template <class DV, class DF, class DL>
+ExactEigenArrangement arrange_eigen_exact(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBase<DF>& F,
+                                          const ArrangeOptions& options, const Eigen::MatrixBase<DL>* labels,
+                                          const std::string& where) {
+  return exact_eigen_arrangement_of(arrange_validated(exact_eigen_soup(V, F, labels, where), options));
 }
 
 }  // namespace detail

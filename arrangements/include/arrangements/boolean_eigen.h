@@ -108,46 +108,6 @@ void concatenate_operands(const std::vector<MV>& V, const std::vector<MF>& F, co
   }
 }
 
-// The EigenArrangement of a double-path result (as arrange_eigen builds it). exact
-// (optional): receives tritri::to_exact of every output vertex.
-inline EigenArrangement eigen_arrangement_of(ArrangeResult&& result, std::vector<ExactVec3>* exact = nullptr) {
-  OutputMesh& mesh = result.mesh;
-  EigenArrangement out;
-  const auto nv = static_cast<Eigen::Index>(mesh.vertices.size());
-  out.V.resize(nv, 3);
-  out.V_is_exact.resize(nv);
-  if (exact) {
-    exact->clear();
-    exact->resize(mesh.vertices.size());
-  }
-  tbb::parallel_for(Eigen::Index{0}, nv, [&](Eigen::Index v) {
-    const tritri::ImplicitPoint& p = mesh.vertices[static_cast<std::size_t>(v)];
-    const std::array<double, 3> x = tritri::to_double(p);
-    bool is_exact = true;
-    if (!p.is_explicit() || exact) {
-      const std::array<CGAL::Gmpq, 3> q = tritri::to_exact(p);
-      for (int c = 0; c < 3; ++c) is_exact = is_exact && std::isfinite(x[c]) && CGAL::Gmpq(x[c]) == q[c];
-      if (exact) (*exact)[static_cast<std::size_t>(v)] = q;
-    }
-    for (int c = 0; c < 3; ++c) out.V(v, c) = x[c];
-    out.V_is_exact(v) = is_exact;
-  });
-  set_eigen_faces(out, mesh, result.stats);
-  out.vertices = std::move(mesh.vertices);
-  return out;
-}
-
-// The ExactEigenArrangement of an exact-path result.
-inline ExactEigenArrangement exact_eigen_arrangement_of(ExactArrangeResult&& result) {
-  ExactOutputMesh& mesh = result.mesh;
-  ExactEigenArrangement out;
-  out.V.resize(static_cast<Eigen::Index>(mesh.vertices.size()), 3);
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
-    for (int c = 0; c < 3; ++c) out.V(static_cast<Eigen::Index>(v), c) = std::move(mesh.vertices[v][c]);
-  set_eigen_faces(out, mesh, result.stats);
-  return out;
-}
-
 // boolean() below for any Eigen matrix types of doubles (the Python module passes row-major
 // maps with int64 indices). exact (optional): receives the exact output vertices.
 template <class MV, class MF>
