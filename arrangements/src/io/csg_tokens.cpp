@@ -46,11 +46,11 @@ bool is_number(std::string_view s) {
 }  // namespace
 
 CsgTokens::CsgTokens(const std::string& path) : in_(path) {
-  if (in_.fill(3) >= 3 && std::string_view(in_.data(), 3) == "\xEF\xBB\xBF") in_.consume(3);
+  if (in_.fill(3) >= 3 && std::string_view(in_.unread(), 3) == "\xEF\xBB\xBF") in_.consume(3);
 }
 
 void CsgTokens::advance() {
-  const char c = in_.data()[0];
+  const char c = in_.unread()[0];
   in_.consume(1);
   if (c == '\n') {
     if (!after_cr_) ++line_;

@@ -47,7 +47,7 @@ class CsgTokens {
  private:
   int peek(std::size_t k = 0) {  // the k-th next byte (0..255), -1 past the end
     if (in_.available() <= k && in_.fill(k + 1) <= k) return -1;
-    return static_cast<unsigned char>(in_.data()[k]);
+    return static_cast<unsigned char>(in_.unread()[k]);
   }
   void advance();  // one byte, counting line ends
   void skip_space_and_comments();

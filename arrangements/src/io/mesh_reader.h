@@ -45,9 +45,9 @@ class FileBytes {
   std::uint64_t remaining() const { return size_ > consumed_ ? size_ - consumed_ : 0; }
 
   // Makes at least n bytes available from the cursor, fewer only at the end of the file;
-  // returns how many are. Invalidates data() and earlier views.
+  // returns how many are. Invalidates unread() and earlier views.
   std::size_t fill(std::size_t n) { return end_ - pos_ >= n ? end_ - pos_ : refill(n); }
-  const char* data() const { return buffer_.data() + pos_; }
+  const char* unread() const { return buffer_.data() + pos_; }
   std::size_t available() const { return end_ - pos_; }
   void consume(std::size_t n) {
     pos_ += n;
@@ -86,7 +86,7 @@ class LineReader {
   // L: a NUL byte: " + not_text).
   explicit LineReader(FileBytes& in, std::string not_text = "not a text mesh file")
       : in_(in), not_text_(std::move(not_text)) {
-    if (in_.fill(3) >= 3 && std::string_view(in_.data(), 3) == "\xEF\xBB\xBF") in_.consume(3);
+    if (in_.fill(3) >= 3 && std::string_view(in_.unread(), 3) == "\xEF\xBB\xBF") in_.consume(3);
   }
   // Whether a line may be longer than kMaxLineBytes, given its first kMaxLineBytes bytes
   // (the rest must then be numbers and blanks). nullptr, the default: no line may.
@@ -101,11 +101,11 @@ class LineReader {
     if (n == 0 && (n = in_.fill(1)) == 0) return false;
     std::size_t i = 0;
     for (;;) {
-      i = find_line_end(in_.data(), i, n);
+      i = find_line_end(in_.unread(), i, n);
       if (i < n) break;
       const std::size_t more = in_.fill(n + 1);
       if (more == n) {  // the last line, without an end
-        line = std::string_view(in_.data(), n);
+        line = std::string_view(in_.unread(), n);
         in_.consume(n);
         ++line_;
         return true;
@@ -113,11 +113,11 @@ class LineReader {
       n = more;
     }
     std::size_t end_length = 1;
-    if (in_.data()[i] == '\r') {
+    if (in_.unread()[i] == '\r') {
       if (i + 1 >= n) n = in_.fill(i + 2);
-      if (i + 1 < n && in_.data()[i + 1] == '\n') end_length = 2;
+      if (i + 1 < n && in_.unread()[i + 1] == '\n') end_length = 2;
     }
-    line = std::string_view(in_.data(), i);
+    line = std::string_view(in_.unread(), i);
     in_.consume(i + end_length);
     ++line_;
     return true;

@@ -245,7 +245,7 @@ class BodyReader {
   Value read_binary(PlyType t, const ItemName& what, const PlyProperty& p) {
     const std::size_t n = size_of(t);
     if (in_.fill(n) < n) refuse(InputErrorKind::malformed, path_, "the file ends inside " + what.str());
-    const unsigned char* b = reinterpret_cast<const unsigned char*>(in_.data());
+    const unsigned char* b = reinterpret_cast<const unsigned char*>(in_.unread());
     std::uint64_t bits = 0;
     if (format_ == PlyFormat::binary_big_endian)
       for (std::size_t i = 0; i < n; ++i) bits = (bits << 8) | b[i];

@@ -101,7 +101,7 @@ void read_binary(FileBytes& in, SoupBuilder& out, std::uint32_t n) {
   for (std::uint32_t t = 0; t < n; ++t) {
     if (in.fill(kBinaryTriangleBytes) < kBinaryTriangleBytes)
       refuse(InputErrorKind::malformed, in.path(), "the file ends inside triangle " + std::to_string(t + 1));
-    const char* corners = in.data() + 12;
+    const char* corners = in.unread() + 12;
     int ijk[3];
     for (int k = 0; k < 3; ++k) {
       Vec3 p;
@@ -180,7 +180,7 @@ void read_ascii(FileBytes& in, SoupBuilder& out, std::uint32_t declared) {
 void read_stl(FileBytes& in, SoupBuilder& out) {
   std::uint32_t declared = 0;
   if (in.size() >= kBinaryHeaderBytes && in.fill(kBinaryHeaderBytes) >= kBinaryHeaderBytes) {
-    declared = read_le_uint32(in.data() + 80);
+    declared = read_le_uint32(in.unread() + 80);
     if (kBinaryHeaderBytes + std::uint64_t{declared} * kBinaryTriangleBytes == in.size())
       return read_binary(in, out, declared);
   }
