@@ -81,7 +81,7 @@ Result run_stages(const BasicTriangleSoup<typename M::Input>& input, const Arran
   BasicDetectedPairs<M> detected = detect_pairs<M>(soup.vertices, soup.triangles, workers, soup.polygon);
   s.candidate_pairs = detected.box_pairs;
   s.classified_pairs = detected.pairs.size();
-  refuse_huge_coplanar_clusters<M>(soup.vertices, soup.triangles, detected.pairs, detected.planes);
+  refuse_huge_coplanar_clusters(soup.triangles.size(), detected.coplanar);
   s.t_detect_s = seconds_since(t0);
 
   // Stages 3 and 4 (timed together as "classify"): classify every candidate pair, then

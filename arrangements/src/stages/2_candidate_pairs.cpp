@@ -66,6 +66,7 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
   constexpr std::size_t kChunk = 1 << 14;
   struct Found {
     std::vector<Pairs> chunks;
+    Pairs coplanar;  // the kept pairs that lie in one plane (few, usually)
     std::size_t box_pairs = 0;
   };
   tbb::enumerable_thread_specific<Found> found;
@@ -132,10 +133,11 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
     }
     bool settled = shares ? tritri::meet_only_in_shared_by_sides(a, b, side) : tritri::separated_by_plane(side);
     if (settled_in_projection) return;
+    bool flat = false;  // every kept pair gets here unsettled, so flat is known for it
     if (!settled) {
       const typename M::Kernel k;
       const std::array<Vertex, 3> pa{V[a[0]], V[a[1]], V[a[2]]}, pb{V[b[0]], V[b[1]], V[b[2]]};
-      const bool flat = coplanar();
+      flat = coplanar();
       if (settled_in_projection) return;
       if (!flat) {  // one triangle touching the other's plane without crossing it
         const tritri::Sign sb[3] = {side(0, 0), side(0, 1), side(0, 2)};
@@ -157,6 +159,7 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
       local.chunks.back().reserve(kChunk);
     }
     local.chunks.back().emplace_back(i, j);
+    if (flat) local.coplanar.emplace_back(i, j);
   };
   // Doubles: the triangles around a hub vertex are paired by their directions from it
   // (tritri/hub_pairs.h: a fan of n triangles makes O(n) pairs, not n^2 / 2); rational
@@ -172,12 +175,17 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
     for (const Pairs& c : f.chunks) kept += c.size();
   }
   out.pairs.reserve(kept);
-  for (Found& f : found)
+  for (Found& f : found) {
     for (Pairs& c : f.chunks) {
       out.pairs.insert(out.pairs.end(), c.begin(), c.end());
       Pairs().swap(c);
     }
-  arena.execute([&] { tbb::parallel_sort(out.pairs.begin(), out.pairs.end()); });
+    out.coplanar.insert(out.coplanar.end(), f.coplanar.begin(), f.coplanar.end());
+  }
+  arena.execute([&] {
+    tbb::parallel_sort(out.pairs.begin(), out.pairs.end());
+    tbb::parallel_sort(out.coplanar.begin(), out.coplanar.end());
+  });
   return out;
 }
 

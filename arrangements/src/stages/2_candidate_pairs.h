@@ -15,7 +15,9 @@
 // returns `pairs`: every pair (i, j), i < j, whose closed bounding boxes overlap and that
 // the exact early-outs below do not settle, sorted, each once; `box_pairs`: how many pairs
 // the search visited (the stat candidate_pairs); `planes`: one M::PlaneCache per
-// triangle (DoubleModel: tritri::PlaneFilter; stage 3 reuses them).
+// triangle (DoubleModel: tritri::PlaneFilter; stage 3 reuses them); `coplanar`: the pairs
+// of `pairs` whose triangles lie in one plane (known from the early-outs' plane signs),
+// for the coplanar-cluster budget (2_coplanar_budget.h).
 // Search: tritri::for_each_candidate_pair for doubles (tritri/hub_pairs.h: the box pairs,
 // except that the triangles around a vertex of high degree are paired by their directions
 // from it, so a fan is not paired all to all; a pair left out meets only in that vertex),
@@ -64,6 +66,7 @@ namespace arrangements {
 template <class M>
 struct BasicDetectedPairs {
   std::vector<std::pair<int, int>> pairs;         // to classify, sorted
+  std::vector<std::pair<int, int>> coplanar;      // those of them in one plane, sorted
   std::size_t box_pairs = 0;                      // pairs with overlapping boxes
   std::vector<typename M::PlaneCache> planes;     // M::plane_cache of each triangle, for stage 3
 };

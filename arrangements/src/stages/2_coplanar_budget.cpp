@@ -1,55 +1,30 @@
 // The end of stage 2: the coplanar-cluster budget (see 2_coplanar_budget.h).
 #include "stages/2_coplanar_budget.h"
 
-#include <tbb/parallel_for.h>
-
 #include <string>
 
 #include "arrangements/input_error.h"
-#include "models/double_model.h"
-#include "models/exact_model.h"
 
 namespace arrangements {
 
-template <class M>
-void refuse_huge_coplanar_clusters(const std::vector<typename M::Vertex>& V, const std::vector<Tri>& F,
-                                   const std::vector<std::pair<int, int>>& pairs,
-                                   std::span<const typename M::PlaneCache> planes) {
-  if (pairs.size() < 3) return;
-  std::vector<char> coplanar(pairs.size(), 0);
-  tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t i) {
-    const Tri& a = F[pairs[i].first];
-    const Tri& b = F[pairs[i].second];
-    bool c = true;
-    for (int k = 0; k < 3 && c; ++k) {
-      if constexpr (!M::kProjectionFirst) {  // the cached plane decides most corners at once
-        if (const auto sign = M::certified_side_of_plane(planes[pairs[i].first], V[a[0]], V[b[k]])) {
-          c = *sign == tritri::Sign::Zero;
-          continue;
-        }
-      }
-      c = M::orient3d(V[a[0]], V[a[1]], V[a[2]], V[b[k]]) == tritri::Sign::Zero;
-    }
-    coplanar[i] = c;
-  });
-  std::vector<std::size_t> start(F.size() + 1, 0);
-  for (std::size_t i = 0; i < pairs.size(); ++i)
-    if (coplanar[i]) ++start[pairs[i].first + 1];  // forward adjacency: t < u
+void refuse_huge_coplanar_clusters(std::size_t triangles, const std::vector<std::pair<int, int>>& coplanar) {
+  if (coplanar.size() < 3) return;
+  std::vector<std::size_t> start(triangles + 1, 0);
+  for (const auto& [t, u] : coplanar) ++start[t + 1];  // forward adjacency: t < u
   std::size_t edges = 0;
-  for (std::size_t t = 0; t < F.size(); ++t) edges += start[t + 1], start[t + 1] = edges;
+  for (std::size_t t = 0; t < triangles; ++t) edges += start[t + 1], start[t + 1] = edges;
   if (edges < 3) return;
   std::vector<int> next(edges);
   {
     std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < pairs.size(); ++i)  // pairs are sorted: each list ascending
-      if (coplanar[i]) next[fill[pairs[i].first]++] = pairs[i].second;
+    for (const auto& [t, u] : coplanar) next[fill[t]++] = u;  // sorted pairs: each list ascending
   }
   // Triples t < u < v with (t, u), (t, v), (u, v) all coplanar candidate pairs.
-  std::vector<int> mark(F.size(), -1);
+  std::vector<int> mark(triangles, -1);
   std::uint64_t triples = 0, work = 0;
   std::size_t cluster = 0;  // the triangles of the largest neighbourhood seen, for the message
   int where = -1;
-  for (std::size_t t = 0; t < F.size(); ++t) {
+  for (std::size_t t = 0; t < triangles; ++t) {
     if (start[t + 1] - start[t] < 2) continue;
     for (std::size_t i = start[t]; i < start[t + 1]; ++i) mark[next[i]] = static_cast<int>(t);
     for (std::size_t i = start[t]; i < start[t + 1]; ++i) {
@@ -71,13 +46,5 @@ void refuse_huge_coplanar_clusters(const std::vector<typename M::Vertex>& V, con
     if (work > kMaxTripleWork) return;  // no verdict without a bounded count: arranged as before
   }
 }
-
-template void refuse_huge_coplanar_clusters<DoubleModel>(const std::vector<Vec3>&, const std::vector<Tri>&,
-                                                         const std::vector<std::pair<int, int>>&,
-                                                         std::span<const DoubleModel::PlaneCache>);
-template void refuse_huge_coplanar_clusters<ExactModel>(const std::vector<ExactModel::Vertex>&,
-                                                        const std::vector<Tri>&,
-                                                        const std::vector<std::pair<int, int>>&,
-                                                        std::span<const ExactModel::PlaneCache>);
 
 }  // namespace arrangements
