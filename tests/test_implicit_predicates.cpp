@@ -9,7 +9,8 @@
 //     position;
 //   - one point built several ways (LPI = TPI = explicit vertex, LPIs of different lines)
 //     is one point for every predicate;
-//   - the filter and exact stages are counted.
+//   - the filter, incidence (zeros by construction, detail/incidence.h) and exact stages
+//     are counted; each test asserts that its cases took the incidence shortcut.
 //
 // Scenes (support/implicit_scenes.h) mix integer-grid and random-double coordinates under
 // exact per-axis scalings by 2^k (k in [-60, 60], 2^+-300, rarely 2^+-600, 2^+-900, 2^1000
@@ -19,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstdint>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -53,8 +55,12 @@ int sign_of(Sign s) { return tritri::to_int(s); }
 // ---------------------------------------------------------------------------------------
 // Predicates against the reference.
 
+// Zeros decided by an incidence known by construction (detail/incidence.h) since `before`.
+std::uint64_t structural_since(std::uint64_t before) { return tritri::implicit_predicate_stats().structural - before; }
+
 TEST(ImplicitPredicates, Orient3dMatchesExactReference) {
   long long cases = 0, zeros = 0, by_construction = 0, failures = 0;
+  const std::uint64_t structural_before = tritri::implicit_predicate_stats().structural;
   std::array<long long, 81> patterns{};  // operand kinds, base 3, position 0 most significant
   run_scenes(21, tritri_test::scaled_count(400000), [&](const Scene& s, Rng& rng, long long left) {
     Picker pick(s, rng);
@@ -101,15 +107,18 @@ TEST(ImplicitPredicates, Orient3dMatchesExactReference) {
     cases += n;
     return n;
   });
+  const std::uint64_t structural = structural_since(structural_before);
   std::cout << "[ cases    ] orient3d: " << cases << " cases, " << by_construction << " degenerate by construction, "
-            << zeros << " exact zeros\n";
+            << zeros << " exact zeros, " << structural << " decided by incidence\n";
   EXPECT_EQ(failures, 0);
+  EXPECT_GT(structural, 0u) << "the incidence shortcut was never taken: its answers went untested";
   EXPECT_GE(2 * by_construction, cases);
   for (int p = 0; p < 81; ++p) EXPECT_GT(patterns[p], 0) << "operand-kind pattern " << p << " never generated";
 }
 
 TEST(ImplicitPredicates, Orient2dMatchesExactReferenceInEveryProjection) {
   long long cases = 0, zeros = 0, by_construction = 0, failures = 0;
+  const std::uint64_t structural_before = tritri::implicit_predicate_stats().structural;
   std::array<std::array<long long, 27>, 3> patterns{};
   run_scenes(22, tritri_test::scaled_count(360000), [&](const Scene& s, Rng& rng, long long left) {
     Picker pick(s, rng);
@@ -170,9 +179,11 @@ TEST(ImplicitPredicates, Orient2dMatchesExactReferenceInEveryProjection) {
     cases += n;
     return n;
   });
+  const std::uint64_t structural = structural_since(structural_before);
   std::cout << "[ cases    ] orient2d: " << cases << " cases, " << by_construction << " degenerate by construction, "
-            << zeros << " exact zeros\n";
+            << zeros << " exact zeros, " << structural << " decided by incidence\n";
   EXPECT_EQ(failures, 0);
+  EXPECT_GT(structural, 0u) << "the incidence shortcut was never taken: its answers went untested";
   EXPECT_GE(2 * by_construction, cases);
   for (int pl = 0; pl < 3; ++pl)
     for (int p = 0; p < 27; ++p)
@@ -181,6 +192,7 @@ TEST(ImplicitPredicates, Orient2dMatchesExactReferenceInEveryProjection) {
 
 TEST(ImplicitPredicates, EqualAndLessMatchExactReference) {
   long long pairs = 0, equal_pairs = 0, partial_ties = 0, failures = 0;
+  const std::uint64_t structural_before = tritri::implicit_predicate_stats().structural;
   std::array<long long, 9> patterns{};
   run_scenes(23, tritri_test::scaled_count(150000), [&](const Scene& s, Rng& rng, long long left) {
     Picker pick(s, rng);
@@ -218,8 +230,10 @@ TEST(ImplicitPredicates, EqualAndLessMatchExactReference) {
     return n;
   });
   std::cout << "[ cases    ] equal/less: " << pairs << " pairs (" << 3 * pairs << " predicate calls), " << equal_pairs
-            << " equal, " << partial_ties << " distinct with equal x\n";
+            << " equal, " << partial_ties << " distinct with equal x, " << structural_since(structural_before)
+            << " coordinates compared as known constants\n";
   EXPECT_EQ(failures, 0);
+  EXPECT_GT(structural_since(structural_before), 0u) << "known coordinates never compared: their answers went untested";
   EXPECT_GE(3 * equal_pairs, pairs);
   EXPECT_GT(partial_ties, 0);
   for (int p = 0; p < 9; ++p) EXPECT_GT(patterns[p], 0) << "operand-kind pattern " << p << " never generated";
@@ -293,17 +307,22 @@ TEST(ImplicitPredicates, OnePointBuiltSeveralWaysIsOnePoint) {
   EXPECT_GT(groups, 0);
 }
 
-// The thread-local counters see the filter decide a clear case and the exact stage decide
-// an exact zero (which no floating-point filter can certify).
-TEST(ImplicitPredicates, StatsCountFilterAndExactStages) {
+// The thread-local counters see the filter decide a clear case, the structural test
+// decide a zero by construction (the LPI on its own plane), and the exact stage decide an
+// exact zero that no floating-point filter can certify and no incidence explains.
+TEST(ImplicitPredicates, StatsCountFilterStructuralAndExactStages) {
   const Point r{0, 0, 0}, s{1, 0, 0}, t{0, 1, 0};
   const auto on_plane = ImplicitPoint::lpi(Point{0.1, 0.2, -1}, Point{0.3, 0.1, 1}, r, s, t);
   const auto R = ImplicitPoint::explicit_point(r), S = ImplicitPoint::explicit_point(s),
-             T = ImplicitPoint::explicit_point(t);
+             T = ImplicitPoint::explicit_point(t), U = ImplicitPoint::explicit_point(3, 5, 0);
   const auto far = ImplicitPoint::lpi(Point{0, 0, 5}, Point{1, 1, 6}, S.approx(), T.approx(), Point{0, 0, 3});
   auto& stats = tritri::implicit_predicate_stats();
   const auto before = stats;
   EXPECT_EQ(tritri::orient3d(R, S, T, on_plane), Sign::Zero);
+  EXPECT_EQ(stats.structural, before.structural + 1);
+  EXPECT_EQ(stats.exact, before.exact);
+  // U is on the plane z = 0 too, but is no corner of rst: only the exact stage knows.
+  EXPECT_EQ(tritri::orient3d(R, S, U, on_plane), Sign::Zero);
   EXPECT_EQ(stats.exact, before.exact + 1);
   EXPECT_EQ(tritri::orient3d(R, S, T, far), Sign::Positive);
   EXPECT_EQ(stats.filtered, before.filtered + 1);

@@ -119,6 +119,17 @@ class ImplicitPoint {
     return *rep_->exact;
   }
 
+  // The homogeneous coordinates in the long double filter (detail::WideFilteredValue),
+  // computed once and cached (thread safe), for the stage between the double filters and
+  // the exact one. Precondition: !is_explicit().
+  const detail::Homogeneous<detail::WideFilteredValue>& wide_homogeneous() const {
+    std::call_once(rep_->wide_once, [this] {
+      rep_->wide = std::make_unique<const detail::Homogeneous<detail::WideFilteredValue>>(
+          homogeneous<detail::WideFilteredValue>());
+    });
+    return *rep_->wide;
+  }
+
   // Rounding depths of the cached filtered coordinates of a point of this kind.
   static const detail::Homogeneous<detail::RoundingDepth>& rounding_depth(Kind kind) {
     static const std::array<Coords, 9> none{};  // the depths do not depend on the values
@@ -160,6 +171,9 @@ class ImplicitPoint {
     // Exact homogeneous coordinates, computed on first use by the exact stage only.
     mutable std::once_flag exact_once;
     mutable std::unique_ptr<const detail::Homogeneous<CGAL::Mpzf>> exact;
+    // Long double filter coordinates, computed on first use (subnormal-scale input).
+    mutable std::once_flag wide_once;
+    mutable std::unique_ptr<const detail::Homogeneous<detail::WideFilteredValue>> wide;
   };
   template <int N>
   struct RepWith : Rep {
@@ -201,6 +215,9 @@ class ImplicitPoint {
     rep->filtered = evaluate<detail::FilteredValue>(kind, rep->in);
     // W = 0 exactly means the point is undefined: decide its sign exactly.
     int s = rep->filtered.w.certified_sign(rounding_depth(kind).w.depth);
+    const auto& fw = rep->filtered.w;
+    if (s == 0 && detail::kWideFilterUseful && !(fw.perm >= 0x1p-800 && fw.perm <= 0x1p+800))
+      s = evaluate<detail::WideFilteredValue>(kind, rep->in).w.certified_sign(rounding_depth(kind).w.depth);
     if (s == 0) s = static_cast<int>(evaluate<CGAL::Mpzf>(kind, rep->in).w.sign());
     if (s == 0) return std::nullopt;
     rep->w_sign = s;

@@ -4,10 +4,14 @@
 // orient3d, orient2d (XY, YZ, ZX), equal, less and compare_xyz (lexicographic x, y, z).
 //
 // Each predicate is one polynomial in the points' homogeneous coordinates, written once
-// over a number type and evaluated in two stages: FilteredValue on the coordinates cached
-// in every implicit point (a certified error bound; decides almost always), then
-// CGAL::Mpzf (exact) only when the filter cannot decide. Predicates on explicit points
-// only use the double backend (double_predicates.h). Exact for every input.
+// over a number type and evaluated in stages: FilteredValue on offset and on cached
+// coordinates (a certified error bound; decides almost always); then, when the filters
+// cannot decide, the incidences known by construction (detail/incidence.h: points on one
+// defining plane or line, coordinates fixed by axis-aligned planes), which decide most
+// exact zeros without arithmetic; the same filter in long double where double's exponent
+// range failed (subnormal-scale or overflowing monomials); then CGAL::Mpzf (exact).
+// Predicates on explicit points only use the double backend (double_predicates.h).
+// Exact for every input.
 //
 // Conventions are those of the kernel concept: orient3d(a, b, c, d) is the sign of
 // det[b-a; c-a; d-a], orient2d the sign of det[b-a; c-a] in the projection.
@@ -23,6 +27,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "tritri/detail/incidence.h"
 #include "tritri/detail/filtered_value.h"
 #include "tritri/detail/homogeneous.h"
 #include "tritri/double_predicates.h"
@@ -35,6 +40,8 @@ namespace tritri {
 struct ImplicitPredicateStats {
   std::uint64_t filtered = 0;  // decided by the floating-point filter
   std::uint64_t exact = 0;     // needed the exact stage
+  std::uint64_t wide = 0;        // decided by the long double filter (also counted in filtered)
+  std::uint64_t structural = 0;  // exactly 0 by construction (detail/incidence.h)
 };
 inline ImplicitPredicateStats& implicit_predicate_stats() {
   thread_local ImplicitPredicateStats stats;
@@ -45,6 +52,9 @@ namespace detail {
 
 struct FilteredCoordinates {
   const Homogeneous<FilteredValue>& operator()(const ImplicitPoint& p) const { return p.filtered(); }
+};
+struct WideCoordinates {  // only called on implicit points
+  const Homogeneous<WideFilteredValue>& operator()(const ImplicitPoint& p) const { return p.wide_homogeneous(); }
 };
 struct CoordinateDepths {
   const Homogeneous<RoundingDepth>& operator()(const ImplicitPoint& p) const {
@@ -64,11 +74,13 @@ struct ExactCoordinates {  // only called on implicit points
 };
 
 // Evaluates the sign of poly(T-tag, coordinate getter): `middle` (another filter) first,
-// then the filter on the cached (absolute) coordinates, then exactly if needed.
+// then the filter on the cached (absolute) coordinates, then `known_zero()` (a structural
+// test, true only when the value is exactly 0), then the long double filter when the
+// double one may have underflowed or overflowed, then exactly.
 // `shape` (shape_of, below 81) names the operand kinds: the expression's rounding depth
 // is computed once per call site and shape, then read from a cache.
-template <class Poly, class Middle>
-int staged_sign(const Poly& poly, int shape, const Middle& middle) {
+template <class Poly, class Middle, class KnownZero>
+int staged_sign(const Poly& poly, int shape, const Middle& middle, const KnownZero& known_zero) {
   static std::atomic<int> depth_of_shape[81] = {};  // 0: not computed yet
   int depth = depth_of_shape[shape].load(std::memory_order_relaxed);
   if (depth == 0) {
@@ -80,13 +92,36 @@ int staged_sign(const Poly& poly, int shape, const Middle& middle) {
   // undecided; then the filter on the cached coordinates.
   const int m = middle();
   if (m != 0) return m;
-  const int s = poly(FilteredValue{}, FilteredCoordinates{}).certified_sign(depth);
+  const FilteredValue f = poly(FilteredValue{}, FilteredCoordinates{});
+  const int s = f.certified_sign(depth);
   if (s != 0) {
     ++implicit_predicate_stats().filtered;
     return s;
   }
+  if (known_zero()) {
+    ++implicit_predicate_stats().structural;
+    return 0;
+  }
+  // The same filter in long double (WideFilteredValue), only where double's exponent range
+  // may have been the problem: monomials far below 1 (subnormal-scale input, whose
+  // products underflow and whose bound is then all underflow floors) or overflow.
+  if constexpr (kWideFilterUseful) {
+    if (!(f.perm >= 0x1p-800 && f.perm <= 0x1p+800)) {
+      const int ws = poly(WideFilteredValue{}, WideCoordinates{}).certified_sign(depth);
+      if (ws != 0) {
+        ++implicit_predicate_stats().filtered;
+        ++implicit_predicate_stats().wide;
+        return ws;
+      }
+    }
+  }
   ++implicit_predicate_stats().exact;
   return static_cast<int>(poly(CGAL::Mpzf{}, ExactCoordinates{}).sign());
+}
+
+template <class Poly, class Middle>
+int staged_sign(const Poly& poly, int shape, const Middle& middle) {
+  return staged_sign(poly, shape, middle, [] { return false; });
 }
 
 template <class Poly>
@@ -189,6 +224,13 @@ inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, in
     const double a = p.approx()[k], b = q.approx()[k];
     return a < b ? -1 : (a > b ? 1 : 0);
   }
+  // Both on planes (or lines) constant in k, by construction: compare the constants.
+  if (const auto pk = known_coordinate(p, k)) {
+    if (const auto qk = known_coordinate(q, k)) {
+      ++implicit_predicate_stats().structural;
+      return *pk < *qk ? -1 : (*pk > *qk ? 1 : 0);
+    }
+  }
   auto offset_stage = [&] {
     if (!with_offset) return 0;
     const auto& o = q.is_explicit() ? q.approx() : offset_origin({&p});
@@ -252,6 +294,7 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
         },
         detail::shape_of({&a, &b, &c, &d}));
   };
+  auto on_one_plane = [&] { return detail::on_common_plane({&a, &b, &c, &d}); };
   if (e >= 0) {
     // orient3d = (-1)^e det3(rows W_i (p_i - p_e), i != e, in order) * prod sign(W_i).
     const auto& ref = pts[e]->approx();
@@ -265,7 +308,8 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
           return detail::det3(detail::scaled_difference3<T>(p0, ref, get), detail::scaled_difference3<T>(p1, ref, get),
                               detail::scaled_difference3<T>(p2, ref, get));
         },
-        detail::shape_of({&a, &b, &c, &d}), [&] { return e % 2 ? offset_det4() : -offset_det4(); });
+        detail::shape_of({&a, &b, &c, &d}), [&] { return e % 2 ? offset_det4() : -offset_det4(); },
+        on_one_plane);
     return detail::to_sign((e % 2 ? -s : s) * w);
   }
   const int s = detail::staged_sign(
@@ -275,7 +319,7 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
         return detail::det4<T>(detail::row4<T>(get(a)), detail::row4<T>(get(b)), detail::row4<T>(get(c)),
                                detail::row4<T>(get(d)));
       },
-      detail::shape_of({&a, &b, &c, &d}), offset_det4);
+      detail::shape_of({&a, &b, &c, &d}), offset_det4, on_one_plane);
   return detail::to_sign(-s * w);
 }
 
@@ -305,6 +349,8 @@ inline Sign orient2d_staged(const ImplicitPoint& a, const ImplicitPoint& b, cons
         },
         detail::shape_of({&a, &b, &c}));
   };
+  // Collinear in space by construction: collinear in every projection.
+  auto on_one_line = [&] { return detail::on_common_line({&a, &b, &c}); };
   if (e >= 0) {
     const auto& ref = pts[e]->approx();
     const int s = detail::staged_sign(
@@ -316,7 +362,7 @@ inline Sign orient2d_staged(const ImplicitPoint& a, const ImplicitPoint& b, cons
             if (i != e) rows[n++] = detail::scaled_difference<T>(*pts[i], ref, axes, get);
           return rows[0][0] * rows[1][1] - rows[0][1] * rows[1][0];
         },
-        detail::shape_of({&a, &b, &c}), [&] { return e % 2 ? -offset_det3() : offset_det3(); });
+        detail::shape_of({&a, &b, &c}), [&] { return e % 2 ? -offset_det3() : offset_det3(); }, on_one_line);
     return detail::to_sign((e % 2 ? -s : s) * w);
   }
   const int s = detail::staged_sign(
@@ -330,7 +376,7 @@ inline Sign orient2d_staged(const ImplicitPoint& a, const ImplicitPoint& b, cons
         }
         return detail::det3(rows[0], rows[1], rows[2]);
       },
-      detail::shape_of({&a, &b, &c}), offset_det3);
+      detail::shape_of({&a, &b, &c}), offset_det3, on_one_line);
   return detail::to_sign(s * w);
 }
 }  // namespace detail

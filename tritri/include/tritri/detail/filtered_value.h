@@ -15,6 +15,8 @@
 // rounding of perm itself, valid for depth < 2^20.
 #pragma once
 
+#include <limits>
+
 namespace tritri::detail {
 
 struct FilteredValue {
@@ -43,6 +45,46 @@ struct FilteredValue {
     if (v > bound) return 1;
     if (v < -bound) return -1;
     return 0;  // undecided (also for exact zeros, inf and NaN)
+  }
+};
+
+// WideFilteredValue: the same filter in long double, for the inputs whose monomials
+// leave double's exponent range (subnormal or near-subnormal coordinates, issue 36: a
+// product of two tiny doubles underflows and the double filter can then never decide,
+// however far from zero the exact value is relative to its monomials). Where long double
+// is the x87 80-bit format (exponents to 2^-16382), a product of double-derived values
+// does not underflow. The bound is the one above with u = epsilon/2 of long double and
+// the underflow floor numeric_limits<long double>::min() (min * u = half the smallest
+// subnormal, the largest absolute error of an underflowing product). Exact leaves are
+// doubles (converted exactly). kWideFilterUseful is false where long double is double.
+inline constexpr bool kWideFilterUseful = std::numeric_limits<long double>::max_exponent > 1024 &&
+                                          std::numeric_limits<long double>::min_exponent < -1021;
+
+struct WideFilteredValue {
+  long double v;
+  long double perm;
+
+  WideFilteredValue() = default;
+  WideFilteredValue(double x) : v(x), perm(x < 0 ? -static_cast<long double>(x) : static_cast<long double>(x)) {}
+  WideFilteredValue(long double v_, long double p_) : v(v_), perm(p_) {}
+
+  friend WideFilteredValue operator+(const WideFilteredValue& a, const WideFilteredValue& b) {
+    return {a.v + b.v, a.perm + b.perm};
+  }
+  friend WideFilteredValue operator-(const WideFilteredValue& a, const WideFilteredValue& b) {
+    return {a.v - b.v, a.perm + b.perm};
+  }
+  friend WideFilteredValue operator-(const WideFilteredValue& a) { return {-a.v, a.perm}; }
+  friend WideFilteredValue operator*(const WideFilteredValue& a, const WideFilteredValue& b) {
+    return {a.v * b.v, a.perm * b.perm + std::numeric_limits<long double>::min()};
+  }
+
+  int certified_sign(int depth) const {
+    constexpr long double u = std::numeric_limits<long double>::epsilon() / 2;
+    const long double bound = perm * (depth * (u * (1.0L + 0x1p-20L)));
+    if (v > bound) return 1;
+    if (v < -bound) return -1;
+    return 0;
   }
 };
 
