@@ -61,6 +61,7 @@ std::uint64_t structural_since(std::uint64_t before) { return tritri::implicit_p
 TEST(ImplicitPredicates, Orient3dMatchesExactReference) {
   long long cases = 0, zeros = 0, by_construction = 0, failures = 0;
   const std::uint64_t structural_before = tritri::implicit_predicate_stats().structural;
+  const std::uint64_t wide_before = tritri::implicit_predicate_stats().wide;
   std::array<long long, 81> patterns{};  // operand kinds, base 3, position 0 most significant
   run_scenes(21, tritri_test::scaled_count(400000), [&](const Scene& s, Rng& rng, long long left) {
     Picker pick(s, rng);
@@ -109,9 +110,13 @@ TEST(ImplicitPredicates, Orient3dMatchesExactReference) {
   });
   const std::uint64_t structural = structural_since(structural_before);
   std::cout << "[ cases    ] orient3d: " << cases << " cases, " << by_construction << " degenerate by construction, "
-            << zeros << " exact zeros, " << structural << " decided by incidence\n";
+            << zeros << " exact zeros, " << structural << " decided by incidence, "
+            << tritri::implicit_predicate_stats().wide - wide_before << " by the long double filter\n";
   EXPECT_EQ(failures, 0);
   EXPECT_GT(structural, 0u) << "the incidence shortcut was never taken: its answers went untested";
+  // Scenes scaled to 2^-1068 or 2^+-900 underflow or overflow double's filter.
+  if (tritri::detail::kWideFilterUseful)  // false where long double is double
+    EXPECT_GT(tritri::implicit_predicate_stats().wide, wide_before) << "the long double filter never decided";
   EXPECT_GE(2 * by_construction, cases);
   for (int p = 0; p < 81; ++p) EXPECT_GT(patterns[p], 0) << "operand-kind pattern " << p << " never generated";
 }
