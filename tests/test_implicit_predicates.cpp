@@ -115,8 +115,9 @@ TEST(ImplicitPredicates, Orient3dMatchesExactReference) {
   EXPECT_EQ(failures, 0);
   EXPECT_GT(structural, 0u) << "the incidence shortcut was never taken: its answers went untested";
   // Scenes scaled to 2^-1068 or 2^+-900 underflow or overflow double's filter.
-  if (tritri::detail::kWideFilterUseful)  // false where long double is double
+  if (tritri::detail::kWideFilterUseful) {  // false where long double is double
     EXPECT_GT(tritri::implicit_predicate_stats().wide, wide_before) << "the long double filter never decided";
+  }
   EXPECT_GE(2 * by_construction, cases);
   for (int p = 0; p < 81; ++p) EXPECT_GT(patterns[p], 0) << "operand-kind pattern " << p << " never generated";
 }
