@@ -14,6 +14,7 @@
 #include <string>
 #include <type_traits>
 
+#include "arrangements/memory_budget.h"
 #include "arrangements/thread_count.h"
 #include "models/double_model.h"
 #include "models/exact_model.h"
@@ -83,6 +84,8 @@ Result run_stages(const BasicTriangleSoup<typename M::Input>& input, const Arran
   s.classified_pairs = detected.pairs.size();
   refuse_huge_coplanar_clusters(soup.triangles.size(), detected.coplanar);
   s.t_detect_s = seconds_since(t0);
+  detail::memory_checkpoint();
+  detail::memory_checkpoint();
 
   // Stages 3 and 4 (timed together as "classify"): classify every candidate pair, then
   // merge the records into the intersection graph. Each intermediate is freed as soon as
@@ -99,6 +102,8 @@ Result run_stages(const BasicTriangleSoup<typename M::Input>& input, const Arran
   auto graph = build_intersection_graph<M>(soup.vertices, soup.triangles, records);
   records = PairRecords{};
   s.t_classify_s = seconds_since(t0);
+  detail::memory_checkpoint();
+  detail::memory_checkpoint();
   s.intersecting_pairs = graph.intersecting_pairs;
   s.coplanar_pairs = graph.coplanar_pairs;
   s.intersection_points = graph.new_points;
@@ -113,6 +118,8 @@ Result run_stages(const BasicTriangleSoup<typename M::Input>& input, const Arran
   s.tpi = info.new_tpi;
   if (!keep) graph = {};
   s.t_triangulate_s = seconds_since(t0);
+  detail::memory_checkpoint();
+  detail::memory_checkpoint();
 
   // Stage 6 (Booleans only): winding numbers per cell, the tree's boundary.
   if (tree) {

@@ -17,6 +17,7 @@
 #include <tritri/implicit_kernel.h>
 #include <tritri/projection.h>
 
+#include "arrangements/memory_budget.h"
 #include "models/exact_model.h"
 #include "support/pair_fault.h"
 
@@ -78,6 +79,7 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     if (degenerate) report(out.degenerate_triangles, "triangle " + std::to_string(t) + " is degenerate");
   });
   auto classify_pair = [&](int i, int j) {
+    detail::memory_checkpoint();
     const Tri& a = F[i];
     const Tri& b = F[j];
     tritri::Result r;
@@ -110,6 +112,7 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     pairs.clear();
   };
   auto found = [&](int a, int b) {
+    detail::memory_checkpoint();
     pairs.emplace_back(std::min(a, b), std::max(a, b));
     if (pairs.size() == kBatch) flush();
   };

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstddef>
 
+#include "arrangements/memory_budget.h"
 #include "support/mesh_on_positions.h"
 #include "support/rounding_grid.h"
 #include "support/violation_tracker.h"
@@ -34,6 +35,7 @@ std::optional<PerVertexRounding> round_per_vertex(const std::vector<ExactVec3>& 
   std::size_t fewest = SIZE_MAX;  // violations: the fewest so far, and rounds since then
   int rounds_since_fewest = 0;
   for (int round = 1; round <= max_rounds; ++round) {
+    detail::memory_checkpoint();
     MeshOnPositions c = mesh_on_positions(position, triangles, source, label_set, label_sets);
     const std::vector<std::pair<int, int>> violating_pairs = tracker.violations(c.mesh);
     if (violating_pairs.empty()) {

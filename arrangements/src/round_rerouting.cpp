@@ -12,6 +12,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "arrangements/memory_budget.h"
 #include "support/mesh_on_positions.h"
 #include "support/violation_tracker.h"
 
@@ -227,6 +228,7 @@ Rerouting reroute_conflicts(const std::vector<Vec3>& position, const std::vector
   int rounds_since_best = 0;
   ViolationTracker tracker;  // vertices never move: later rounds check only the new triangles
   for (int round = 1; round <= max_rounds; ++round) {
+    detail::memory_checkpoint();
     MeshOnPositions c = mesh_on_positions(position, now.triangles, now.source, now.label_set, now.label_sets);
     const std::vector<std::pair<int, int>> violating = tracker.violations(c.mesh);
     best.rounds = round;

@@ -20,6 +20,7 @@
 #include "arrangements/check_arrangement.h"
 #include "arrangements/input_error.h"
 #include "arrangements/load_csg.h"
+#include "arrangements/memory_budget.h"
 #include "booleans/unbalanced_edges.h"
 #include "io/mesh_format.h"
 #include "io/standard_output.h"
@@ -30,6 +31,7 @@
 #include "arrangements/round_mesh.h"
 #include "arrangements/thread_count.h"
 #include "arrangements/write_mesh.h"
+#include "memory_budget.h"
 
 namespace {
 
@@ -103,6 +105,8 @@ options:
   --threads N             worker threads: 0 (the default: all cores) to )" ARRANGEMENTS_MAX_THREADS_STR R"(;
                           larger values are refused (oneTBB cannot run them safely)
   --scale                 scale coordinates by a power of two into a safe range (exact)
+  --max-memory MB         end the run (exit 1, "needs more than MB MB") when its heap
+                          (C++ allocations and GMP numbers) would pass MB megabytes
   --help                  this text
 An option that takes a value may be given once; counts are plain decimal digits.
 
@@ -111,8 +115,8 @@ An option that takes a value may be given once; counts are plain decimal digits.
 const char* kUsageEnd = R"(
 exit status: 0 success, 1 bad input (unreadable, unknown format, malformed, NaN/Inf,
 out-of-range indices, vertices without faces), failed output (a file, or standard
-output) or worker threads the system refuses ("cannot start N worker threads": ulimit
--u or -v; --threads sets fewer), 2 bad command line (unknown option, missing, empty or
+output), worker threads the system refuses ("cannot start N worker threads": ulimit
+-u or -v; --threads sets fewer), or memory (--max-memory, or the system's), 2 bad command line (unknown option, missing, empty or
 out-of-range value, option given twice), 3 --check found a violation, 4 --round safe did
 not converge (or, for a Boolean, its rounded output is not closed).
 )";
@@ -133,6 +137,8 @@ int run(int argc, char** argv) {
   std::optional<BooleanOp> boolean_op;
   std::optional<std::string> csg;
   double round_max_move = RoundSafeOptions{}.max_move_relative;
+  long long max_memory_mb = 0;  // 0: no budget
+  constexpr long long kMaxMemoryMb = 1LL << 30;  // 1 PB: beyond any machine, no overflow in bytes
   detail::CommandLine args("arrange", argc, argv);
   while (args.next()) {
     const std::string& a = args.current();
@@ -172,6 +178,8 @@ int run(int argc, char** argv) {
         args.usage_error("unknown classifier '" + classifier + "' (known: native, tritri)");
     } else if (a == "--threads") {
       threads = static_cast<int>(args.count("--threads", 0, kMaxThreads));
+    } else if (a == "--max-memory") {
+      max_memory_mb = args.count("--max-memory", 1, kMaxMemoryMb);
     } else {
       inputs.push_back(args.operand("an input file name"));
     }
@@ -191,6 +199,7 @@ int run(int argc, char** argv) {
     if (exact && *format == arrangements::detail::MeshFormat::ply)
       args.usage_error("--exact needs an .obj or .off output");
   }
+  tools::set_memory_budget(static_cast<std::size_t>(max_memory_mb) << 20);
   const int workers = threads > 0 ? threads : tbb::info::default_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, workers);
   detail::exit_on_worker_failure("arrange", workers, 1);
@@ -287,6 +296,13 @@ int run(int argc, char** argv) {
   } catch (const detail::WorkerThreadsError& e) {
     std::fprintf(stderr, "arrange: %s (--threads sets fewer)\n", e.what());
     return 1;
+  } catch (const MemoryBudgetExhausted&) {
+    std::fprintf(stderr, "arrange: needs more than %lld MB of memory (--max-memory %lld)\n",
+                 max_memory_mb, max_memory_mb);
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "arrange: out of memory (the system refused an allocation)\n");
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "arrange: error: %s\n", e.what());
     return 1;
@@ -296,6 +312,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  arrangements::tools::install_gmp_counting();
   arrangements::detail::keep_standard_streams_open();
   const int status = run(argc, argv);
   return arrangements::detail::finish_standard_output("arrange", status, 1);

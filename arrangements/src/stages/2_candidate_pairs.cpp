@@ -14,6 +14,7 @@
 #include <tritri/hub_pairs.h>
 #include <tritri/shared_vertices.h>
 
+#include "arrangements/memory_budget.h"
 #include "arrangements/thread_count.h"
 #include "models/exact_model.h"
 
@@ -72,6 +73,7 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
   tbb::enumerable_thread_specific<Found> found;
   const VertexBoxes<M> boxes(V);
   auto visit = [&](int i, int j) {
+    detail::memory_checkpoint();
     Found& local = found.local();
     ++local.box_pairs;
     const Tri& a = F[i];

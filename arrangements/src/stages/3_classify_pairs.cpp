@@ -8,6 +8,7 @@
 #include <tritri/double_kernel.h>
 #include <tritri/plane_filter.h>
 
+#include "arrangements/memory_budget.h"
 #include "stages/3_classify_native.h"
 #include "stages/3_classify_tritri.h"
 #include "models/exact_model.h"
@@ -38,6 +39,7 @@ void classify_range(const K& k, const std::vector<typename K::Point>& V, const s
                     std::size_t begin, std::size_t end, Classifier classifier, PairRecordChunk& found) {
   PairIntersection record;
   for (std::size_t i = begin; i < end; ++i) {
+    detail::memory_checkpoint();
     const auto [ta, tb] = pairs[i];
     bool hit;
     if constexpr (std::is_same_v<K, tritri::DoubleKernel>) {

@@ -19,6 +19,7 @@
 
 #include <tritri/sign.h>
 
+#include "arrangements/memory_budget.h"
 #include "arrangements/triangle_soup.h"
 
 namespace arrangements::local {
@@ -79,6 +80,7 @@ class LocalTriangulation {
 
   // Inserts vertex p (inside the closed input triangle, distinct from every vertex).
   void insert_point(int p) {
+    detail::memory_checkpoint();
     const auto [t, edge] = locate(p);
     if (edge < 0)
       split_triangle(t, p);
@@ -97,6 +99,7 @@ class LocalTriangulation {
   // returns a new vertex at the crossing of constraint cid with constraint `other`.
   template <class Crossing>
   void insert_constraint(int a, int b, int cid, Crossing&& crossing) {
+    detail::memory_checkpoint();
     int cur = a;
     std::vector<std::array<int, 2>> crossed;
     while (cur != b) {

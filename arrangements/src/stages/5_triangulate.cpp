@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "arrangements/memory_budget.h"
 #include "models/double_model.h"
 #include "models/exact_model.h"
 #include "stages/5_triangulate_triangle.h"
@@ -27,6 +28,7 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
     for (int k = 0; k < 3 && !busy[t]; ++k) busy[t] = !g.edge_points[g.triangle_edges[t][k]].empty();
   }
   tbb::parallel_for(std::size_t{0}, nF, [&](std::size_t t) {
+    detail::memory_checkpoint();
     if (busy[t]) pieces[t] = split_triangle_of<M>(soup, g, static_cast<int>(t));
   });
 

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "arrangements/boolean.h"
+#include "arrangements/memory_budget.h"
 #include "booleans/fan_order.h"
 #include "booleans/point_orient.h"
 #include "models/double_model.h"
@@ -37,6 +38,7 @@ SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const Opera
   // Half-edges keyed by their undirected edge; each run of equal keys is one edge's fan.
   std::vector<std::pair<std::uint64_t, int>> half(3 * nT);
   tbb::parallel_for(std::size_t{0}, nT, [&](std::size_t f) {
+    detail::memory_checkpoint();
     const Tri& t = mesh.triangles[f];
     for (int k = 0; k < 3; ++k) {
       const std::uint64_t a = t[k], b = t[(k + 1) % 3];

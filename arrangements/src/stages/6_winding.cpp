@@ -9,6 +9,7 @@
 #include <map>
 #include <type_traits>
 
+#include "arrangements/memory_budget.h"
 #include "booleans/fan_order.h"
 #include "booleans/point_orient.h"
 #include "booleans/ray_winding.h"
@@ -155,6 +156,7 @@ CellWindings cell_windings(const BasicOutputMesh<typename M::Point>& mesh, const
   }
   std::vector<std::array<Vec3, 2>> boxes(soup.triangles.size());
   tbb::parallel_for(std::size_t{0}, soup.triangles.size(), [&](std::size_t t) {
+    detail::memory_checkpoint();
     Vec3 lo, hi;
     boxes[t] = {Vec3{HUGE_VAL, HUGE_VAL, HUGE_VAL}, Vec3{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
     for (int v : soup.triangles[t]) {
