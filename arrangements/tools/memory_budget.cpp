@@ -4,7 +4,6 @@
 #include <gmp.h>
 #include <malloc.h>
 
-#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -14,26 +13,36 @@
 namespace arrangements::tools {
 namespace {
 
-// Signed: a GMP number made before install_gmp_counting and released after it is
-// subtracted without having been added.
+// Signed: a block allocated before the budget was set (or a GMP number made before
+// install_gmp_counting) and released after it is subtracted without having been added.
 std::atomic<long long> budget{0};
 std::atomic<long long> live{0};
-std::atomic<long long> peak{0};
 
-// Counts p (just allocated); past the budget, signals the pipeline to stop.
+// Each thread gathers its allocations and releases and adds them to `live` once they
+// amount to a mebibyte either way: one shared atomic per allocation made arrange 25% slower
+// on two threads (the cache line moves between the cores). The count is exact to a
+// mebibyte per thread.
+constexpr long long kGrain = 1 << 20;
+thread_local long long pending = 0;
+
+void account(long long bytes) {
+  pending += bytes;
+  if (pending < kGrain && pending > -kGrain) return;
+  const long long now = live.fetch_add(pending, std::memory_order_relaxed) + pending;
+  pending = 0;
+  if (now > budget.load(std::memory_order_relaxed)) arrangements::signal_memory_budget_exhausted();
+}
+
+// Counting only with a budget: without one, operator new is malloc.
+bool counting() { return budget.load(std::memory_order_relaxed) != 0; }
+
 void admit(void* p) {
-  const auto n = static_cast<long long>(malloc_usable_size(p));
-  const long long now = live.fetch_add(n, std::memory_order_relaxed) + n;
-  const long long limit = budget.load(std::memory_order_relaxed);
-  if (limit != 0 && now > limit) arrangements::signal_memory_budget_exhausted();
-  long long seen = peak.load(std::memory_order_relaxed);
-  while (now > seen && !peak.compare_exchange_weak(seen, now, std::memory_order_relaxed)) {
-  }
+  if (counting()) account(static_cast<long long>(malloc_usable_size(p)));
 }
 
 void release(void* p) noexcept {
   if (!p) return;
-  live.fetch_sub(static_cast<long long>(malloc_usable_size(p)), std::memory_order_relaxed);
+  if (counting()) account(-static_cast<long long>(malloc_usable_size(p)));
   std::free(p);
 }
 
@@ -62,11 +71,10 @@ void* gmp_allocate(std::size_t size) {
   return p;
 }
 void* gmp_reallocate(void* old, std::size_t, std::size_t size) {
-  const auto before = static_cast<long long>(old ? malloc_usable_size(old) : 0);
+  const auto before = static_cast<long long>(old && counting() ? malloc_usable_size(old) : 0);
   void* p = std::realloc(old, size);
   if (!p) return nullptr;
-  live.fetch_sub(before, std::memory_order_relaxed);
-  admit(p);
+  if (counting()) account(static_cast<long long>(malloc_usable_size(p)) - before);
   return p;
 }
 void gmp_free(void* p, std::size_t) { release(p); }
@@ -74,7 +82,6 @@ void gmp_free(void* p, std::size_t) { release(p); }
 }  // namespace
 
 void set_memory_budget(std::size_t bytes) { budget.store(static_cast<long long>(bytes), std::memory_order_relaxed); }
-std::size_t peak_counted_memory() { return static_cast<std::size_t>(std::max(0LL, peak.load(std::memory_order_relaxed))); }
 void install_gmp_counting() { mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free); }
 
 }  // namespace arrangements::tools
