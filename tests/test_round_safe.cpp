@@ -28,7 +28,7 @@
 #include "arrangements/check_arrangement.h"
 #include "arrangements/load_triangle_soup.h"
 #include "arrangements/round_mesh.h"
-#include "round_per_vertex.h"
+#include "rounding/round_per_vertex.h"
 #include "support/bounding_box.h"
 #include "support/exact_soups.h"
 #include "support/loadable_meshes.h"

@@ -24,7 +24,7 @@
 #include "arrangements/arrange.h"
 #include "arrangements/as_input.h"
 #include "arrangements/round_mesh.h"
-#include "round_snapped_planes.h"
+#include "rounding/round_snapped_planes.h"
 #include "support/bounding_box.h"
 #include "support/exact_oracle.h"
 #include "support/mesh_generators.h"

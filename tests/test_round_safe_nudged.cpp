@@ -1,4 +1,4 @@
-// nudge_conflicts (arrangements/src/round_nudged.h) on its own: a corner of one triangle
+// nudge_conflicts (arrangements/src/rounding/round_nudged.h) on its own: a corner of one triangle
 // an ulp through another's face, at magnitudes 2^-30 to 2^30 and offsets up to 1e6, is
 // moved out of it by a few ulps; the result passes the exact check (check_arrangement)
 // with the same triangles, every vertex within the reported move of where it started;
@@ -25,10 +25,10 @@
 #include "arrangements/as_input.h"
 #include "arrangements/check_arrangement.h"
 #include "arrangements/load_triangle_soup.h"
-#include "round_nudged.h"
+#include "rounding/round_nudged.h"
 #include "support/bounding_box.h"
 #include "support/mesh_generators.h"
-#include "support/rounding_grid.h"
+#include "rounding/rounding_grid.h"
 #include "support/safe_rounding_checks.h"
 #include "support/shared_meshes.h"
 #include "support/test_scale.h"

@@ -45,7 +45,7 @@
 //   distance as wide as the model never collapses it.
 //   Last resorts; rounding per vertex and the rounds of rerouting do not arrange again, so
 //   they make no new points (rerouting's cycles do, few):
-//   Rerouting (src/round_rerouting.h), when level 0 fails: every vertex stays at its
+//   Rerouting (src/rounding/round_rerouting.h), when level 0 fails: every vertex stays at its
 //   nearest double; slivers whose apex lies within an ulp of the opposite edge collapse onto it, and of
 //   each violating pair the vertex within an ulp of the other's edge or face is put on it
 //   (the triangles there split through it: snap rounding's hot-pixel rule); each round
@@ -57,7 +57,7 @@
 //   grows by a tenth); each cycle adds its rounding move and an ulp per round to the bound. Layers
 //   crossing at grazing angles with few conflicts settle this way (three copies of a
 //   10 x 19 sphere rotated about its box centre: 7 cycles, 1.4e-15 of the diagonal).
-//   Rounding per vertex (src/round_per_vertex.h), when level 1 fails too (before levels
+//   Rounding per vertex (src/rounding/round_per_vertex.h), when level 1 fails too (before levels
 //   2-4: it moves only the vertices of conflicting triangles), from the
 //   arrangement's triangles, then from the rerouted ones. Every vertex of the exact
 //   arrangement goes to the nearest double; each round checks the rounded mesh exactly
@@ -69,7 +69,7 @@
 //   passes can where layers cross at grazing angles (two copies of a sphere rotated by pi,
 //   odd number of meridians, which rerouting's cycles now settle first; tested on its
 //   own): there it settles with a few vertices a few ulps off.
-//   Merging input vertices (src/round_merged_input.h), when rerouting fails and
+//   Merging input vertices (src/rounding/round_merged_input.h), when rerouting fails and
 //   options.input is given, before the coarser levels (it moves vertices by a few ulps,
 //   they by 2^8 ulps or more): input vertices within 4 ulps of L of each other are merged
 //   (transitively; then 16, 64, 256 ulps while it does not settle, skipping a distance
@@ -79,7 +79,7 @@
 //   other, instances) then coincide exactly, each shared face once with the union of the
 //   labels, instead of crossing wherever the rounding errors change sign. The bound adds
 //   the largest distance a vertex moved to its cluster's representative.
-//   Snapping nearly coplanar faces (src/round_snapped_planes.h), when merging input
+//   Snapping nearly coplanar faces (src/rounding/round_snapped_planes.h), when merging input
 //   vertices fails: triangles of the input whose corners lie within 4 ulps of L of each
 //   other's planes (then 16, 64), grouped where two layers overlap, are moved exactly onto
 //   one plane per group (a vertex of two or three groups onto their line or point, as
@@ -100,7 +100,7 @@
 //   changed input (every input step) gets 32 passes and 64 for nudging's cycles on top,
 //   rerouting at most 64 in all, and stops after level 1 (the coarser levels move every
 //   vertex far more than the change; this ladder tries them itself).
-//   Nudging (src/round_nudged.h), the last step (also of each changed input's ladder):
+//   Nudging (src/rounding/round_nudged.h), the last step (also of each changed input's ladder):
 //   from rerouting's cycle with the fewest conflicts (at most 1024, or on up to a 20th of
 //   the triangles: as for arranging again in the cycles), the corners of
 //   violating pairs move one at a time to the position 1, 2, 4, ... 1024 ulps around them

@@ -1,5 +1,5 @@
 // BoundingBox: the axis-aligned box of double points, its centre and its diagonal. The one
-// definition that round_safe's move limit (round_mesh.cpp), the generators
+// definition that round_safe's move limit (rounding/round_mesh.cpp), the generators
 // (mesh_generators.cpp) and the tests measure models and place copies with. Exact for the
 // box itself (min and max); centre and diagonal are rounded doubles, measures, never
 // decisions.

@@ -1,6 +1,6 @@
 // CellGrid: points bucketed in cubic cells, to find the points near a point without
 // comparing all pairs. Shared by the snapping of round_mesh.cpp (new points to a double
-// vertex nearby) and merge_close_input_vertices (round_merged_input.cpp).
+// vertex nearby) and merge_close_input_vertices (rounding/round_merged_input.cpp).
 #pragma once
 
 #include <algorithm>

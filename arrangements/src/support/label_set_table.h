@@ -1,7 +1,7 @@
 // LabelSetTable: the label sets of a mesh (output_mesh.h: label_sets, indexed per triangle)
 // stored once each, new sets appended. Shared by preprocessing (stages/1_preprocess.cpp),
 // triangulation (stages/5_triangulate.cpp) and the rounding's clean-up
-// (support/mesh_on_positions.cpp).
+// (rounding/mesh_on_positions.cpp).
 #pragma once
 
 #include <map>

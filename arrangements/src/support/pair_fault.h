@@ -1,5 +1,5 @@
 // pair_fault: the rule of check_arrangement (arrangements/check_arrangement.h) for one pair of
-// triangles, shared by the check and by nudge_conflicts (round_nudged.cpp), which weighs
+// triangles, shared by the check and by nudge_conflicts (rounding/round_nudged.cpp), which weighs
 // moves of one vertex by the pairs they make or mend.
 #pragma once
 

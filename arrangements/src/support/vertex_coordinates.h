@@ -1,6 +1,6 @@
 // The coordinates of an output vertex, whatever the mesh stores (output_mesh.h): implicit
 // points (OutputMesh), rationals (ExactOutputMesh) or doubles (RoundedMesh). Shared by the
-// writer (io/write_mesh.cpp) and the rounding (round_mesh.cpp).
+// writer (io/write_mesh.cpp) and the rounding (rounding/round_mesh.cpp).
 #pragma once
 
 #include <tritri/implicit_point.h>

@@ -1,5 +1,5 @@
-// mesh_on_positions (support/mesh_on_positions.h).
-#include "support/mesh_on_positions.h"
+// mesh_on_positions (rounding/mesh_on_positions.h).
+#include "rounding/mesh_on_positions.h"
 
 #include <algorithm>
 #include <iterator>

@@ -2,6 +2,37 @@
 // they are documented) in the order they are tried, each on the exact arrangement, the
 // first result that is an arrangement within the move limit returned. round_mesh.cpp runs
 // one; each changed input runs one of its own.
+//
+// The steps of Ladder::run, in order. Invariant of every step: a result is returned only
+// if it is an arrangement (arranging it again changes nothing, or the exact check finds
+// no violating pair and arranging it once more proves it: `settled`), its largest vertex
+// move is within the move limit (a 64th of the diagonal by default, capped by move_cap),
+// and it is not emptied (`finish`); otherwise the next step is tried, and after the last
+// one the ladder throws RoundingError (round_refusal.h).
+//   1. Level 0 (passes_at_level): round to the nearest doubles, arrange again, round
+//      again, up to kPassesPerLevel passes (more while a pass makes no new point); stops
+//      early when a pass does not reduce the intersecting pairs or grows the mesh by more
+//      than a tenth.
+//   2. Rerouting (round_rerouting.h, reroute_in_cycles): vertices stay at their nearest
+//      doubles; slivers collapse and edges and faces reroute through vertices within an
+//      ulp; in cycles of arranging again and rounding while the conflicts are few. Its
+//      bound adds an ulp per round of rerouting.
+//   3. Merged input (round_merged_input.h), only with options.input: input vertices
+//      within 4^k ulps (k = 1..4) merged, the changed input arranged and rounded by a
+//      ladder of its own (settle_input, levels 0 and 1); the bound adds the input's move.
+//   4. Snapped planes (round_snapped_planes.h), only with options.input: near-coplanar
+//      layers, then corners near a touched face's plane, within 4^k ulps (k = 1..3) made
+//      coplanar exactly, settled as in 3.
+//   5. Level 1: the passes of 1 on the grid of 2^8 ulps.
+//   6. Per vertex (round_per_vertex.h, round_each_vertex): only the vertices of violating
+//      pairs move, to coarser grids of their own, from the arrangement's triangles, then
+//      from the first rerouting's.
+//   7. Levels 2 to 4: each after merging the input within its spacing (`stable`
+//      distances only), the passes of 1 on grids of 2^(8j) ulps.
+//   8. Nudging (round_nudged.h, nudge_in_cycles), the last step: the corners of the
+//      conflicts that rerouting's best cycle left move by 1 to 1024 ulps one at a time
+//      where that leaves fewer; in cycles of arranging again and rerouting.
+// Every step counts its passes against options.max_passes (less the nudging reserve).
 #pragma once
 
 #include <tbb/parallel_for.h>
@@ -21,16 +52,16 @@
 #include "arrangements/arrange.h"
 #include "arrangements/as_input.h"
 #include "arrangements/round_mesh.h"
-#include "round_merged_input.h"
-#include "round_snapped_planes.h"
-#include "round_nudged.h"
-#include "round_per_vertex.h"
-#include "round_refusal.h"
-#include "round_rerouting.h"
-#include "round_to_grid.h"
+#include "rounding/round_merged_input.h"
+#include "rounding/round_snapped_planes.h"
+#include "rounding/round_nudged.h"
+#include "rounding/round_per_vertex.h"
+#include "rounding/round_refusal.h"
+#include "rounding/round_rerouting.h"
+#include "rounding/round_to_grid.h"
 #include "support/bounding_box.h"
-#include "support/mesh_on_positions.h"
-#include "support/rounding_grid.h"
+#include "rounding/mesh_on_positions.h"
+#include "rounding/rounding_grid.h"
 #include "support/vertex_coordinates.h"
 
 namespace arrangements::detail {

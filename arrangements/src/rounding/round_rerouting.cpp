@@ -1,6 +1,6 @@
 // reroute_conflicts (round_rerouting.h): slivers collapsed and edges and faces rerouted
 // through vertices within delta, where the rounded mesh is not an arrangement.
-#include "round_rerouting.h"
+#include "rounding/round_rerouting.h"
 
 #include <CGAL/Gmpq.h>
 #include <tbb/parallel_for.h>
@@ -13,8 +13,8 @@
 #include <unordered_map>
 
 #include "arrangements/memory_budget.h"
-#include "support/mesh_on_positions.h"
-#include "support/violation_tracker.h"
+#include "rounding/mesh_on_positions.h"
+#include "rounding/violation_tracker.h"
 
 namespace arrangements {
 namespace {

@@ -14,7 +14,7 @@
 // Termination: every round that does not succeed raises the level of at least one vertex,
 // and levels are bounded, so there are at most 16 x #vertices rounds; `max_rounds` bounds
 // them further. Returns nullopt when a vertex would need a grid coarser than 2^32 ulps or
-// would move by more than `move_limit` (its distance_bound, support/rounding_grid.h), when
+// would move by more than `move_limit` (its distance_bound, rounding/rounding_grid.h), when
 // 2 rounds in a row found no fewer violations than the best round before them (coarsening
 // then spreads the conflicts instead of removing them), or when the rounds run out.
 // Displacement: a vertex moves by at most half a cell diagonal of its level from its

@@ -1,6 +1,6 @@
 // merge_close_input_vertices (round_merged_input.h): vertices within delta merged, the
 // input kept otherwise.
-#include "round_merged_input.h"
+#include "rounding/round_merged_input.h"
 
 #include <CGAL/Gmpq.h>
 
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "support/cell_grid.h"
-#include "support/rounding_grid.h"
+#include "rounding/rounding_grid.h"
 
 namespace arrangements {
 namespace {

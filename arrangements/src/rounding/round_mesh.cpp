@@ -6,8 +6,8 @@
 
 #include <limits>
 
-#include "round_ladder.h"
-#include "round_to_grid.h"
+#include "rounding/round_ladder.h"
+#include "rounding/round_to_grid.h"
 
 namespace arrangements {
 

@@ -1,6 +1,6 @@
 // nudge_conflicts (round_nudged.h): moving the corners of violating pairs by 1 to 1024 steps
 // of the grid, one at a time, wherever that leaves fewer violations.
-#include "round_nudged.h"
+#include "rounding/round_nudged.h"
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
@@ -20,7 +20,7 @@
 #include "arrangements/as_input.h"
 #include "arrangements/check_arrangement.h"
 #include "support/pair_fault.h"
-#include "support/rounding_grid.h"
+#include "rounding/rounding_grid.h"
 
 namespace arrangements {
 namespace {

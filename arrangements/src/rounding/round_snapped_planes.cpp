@@ -1,6 +1,6 @@
 // snap_near_coplanar_faces (round_snapped_planes.h): near-coplanar layers of the input made
 // coplanar, the input kept otherwise.
-#include "round_snapped_planes.h"
+#include "rounding/round_snapped_planes.h"
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
@@ -18,7 +18,7 @@
 #include <tritri/box_pairs.h>
 
 #include "arrangements/as_input.h"
-#include "support/rounding_grid.h"
+#include "rounding/rounding_grid.h"
 
 namespace arrangements {
 namespace {

@@ -1,5 +1,5 @@
-// ViolationTracker (support/violation_tracker.h).
-#include "support/violation_tracker.h"
+// ViolationTracker (rounding/violation_tracker.h).
+#include "rounding/violation_tracker.h"
 
 #include <algorithm>
 #include <bit>

@@ -24,7 +24,7 @@
 // fewer violations than the best round. What is left of the conflicts then is for the
 // coarser grids and round_per_vertex (round_per_vertex.h), which also tries the best
 // round's triangles.
-// Cost per round: one check (support/violation_tracker.h: the first round every pair, later
+// Cost per round: one check (rounding/violation_tracker.h: the first round every pair, later
 // ones only the pairs with a triangle the round before did not have), exact distance tests
 // (rationals of the doubles, after a double filter) on the triangles of violating pairs, a
 // hash map of the edges.

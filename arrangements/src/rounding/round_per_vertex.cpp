@@ -1,6 +1,6 @@
 // round_per_vertex (round_per_vertex.h): rounding every vertex of the exact arrangement
 // to a grid of its own, coarser only where the rounded mesh is not an arrangement.
-#include "round_per_vertex.h"
+#include "rounding/round_per_vertex.h"
 
 #include <tbb/parallel_for.h>
 
@@ -9,9 +9,9 @@
 #include <cstddef>
 
 #include "arrangements/memory_budget.h"
-#include "support/mesh_on_positions.h"
-#include "support/rounding_grid.h"
-#include "support/violation_tracker.h"
+#include "rounding/mesh_on_positions.h"
+#include "rounding/rounding_grid.h"
+#include "rounding/violation_tracker.h"
 
 namespace arrangements {
 namespace {

@@ -18,7 +18,7 @@
 #include "arrangements/output_mesh.h"
 #include "arrangements/round_mesh.h"
 #include "support/cell_grid.h"
-#include "support/rounding_grid.h"
+#include "rounding/rounding_grid.h"
 #include "support/vertex_coordinates.h"
 
 namespace arrangements::detail {
