@@ -130,8 +130,9 @@ int staged_sign(const Poly& poly, int shape) {
 }
 
 // First filter stage: poly(tag, off) evaluated on offset coordinates (off(p) = (W (p - o),
-// W) for the predicate's origin o), FilteredValue only; 0 if undecided. The rounding depth
-// is computed once per call site and shape, like staged_sign's.
+// W) for the predicate's origin o), FilteredValue only; 0 if undecided. (A long double
+// stage here, uncached, cost more on subnormal-scale input than the exact calls it
+// saved.) The rounding depth is computed once per call site and shape, like staged_sign's.
 template <class Poly>
 int offset_filter_sign(const Poly& poly, int shape) {
   static std::atomic<int> depth_of_shape[81] = {};
@@ -224,7 +225,12 @@ inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, in
     const double a = p.approx()[k], b = q.approx()[k];
     return a < b ? -1 : (a > b ? 1 : 0);
   }
-  // Both on planes (or lines) constant in k, by construction: compare the constants.
+  // One point built twice (a crossing found from both triangles), or both on planes (or
+  // lines) constant in k, by construction: no arithmetic.
+  if (same_point_by_construction(p, q)) {
+    ++implicit_predicate_stats().structural;
+    return 0;
+  }
   if (const auto pk = known_coordinate(p, k)) {
     if (const auto qk = known_coordinate(q, k)) {
       ++implicit_predicate_stats().structural;

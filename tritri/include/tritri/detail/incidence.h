@@ -7,7 +7,8 @@
 //   on_common_line(points)    every point lies on one line some operand was built from
 //                             (orient2d of them, in any projection, is 0);
 //   known_coordinate(p, k)    p's k-th coordinate as a double when p is explicit or lies
-//                             on a line or plane that is constant in k.
+//                             on a line or plane that is constant in k;
+//   same_point_by_construction(p, q)   LPIs of one line and plane, TPIs of one set of planes.
 // What a point lies on: an explicit point on every plane and line it is a defining corner
 // of; an LPI (p, q, r, s, t) on its line pq and its plane rst, on every plane that has
 // p and q as corners and on that plane's meet with rst; a TPI on its three planes and on
@@ -115,6 +116,22 @@ inline bool on_common_plane(std::initializer_list<const ImplicitPoint*> points) 
     }
   }
   return false;
+}
+
+// The same point by construction: two LPIs of one line (two corners, in either order)
+// and one plane, or two TPIs of the same three planes, in any order.
+inline bool same_point_by_construction(const ImplicitPoint& p, const ImplicitPoint& q) {
+  if (p.is_explicit() || q.is_explicit() || p.kind() != q.kind()) return false;
+  PlaneCorners pp[3], qp[3];
+  const int n = defining_planes(p, pp);
+  defining_planes(q, qp);
+  if (p.kind() == ImplicitPoint::Kind::LPI)
+    return same_plane(pp[0], qp[0]) && ((p.input(0) == q.input(0) && p.input(1) == q.input(1)) ||
+                                        (p.input(0) == q.input(1) && p.input(1) == q.input(0)));
+  // Three independent planes (W != 0): as sets, each of p's is one of q's, all distinct.
+  for (int i = 0; i < n; ++i)
+    if (!same_plane(pp[i], qp[0]) && !same_plane(pp[i], qp[1]) && !same_plane(pp[i], qp[2])) return false;
+  return true;
 }
 
 // p's coordinate k exactly, when p is explicit or lies on a defining plane (or an LPI on
