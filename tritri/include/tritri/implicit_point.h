@@ -215,8 +215,7 @@ class ImplicitPoint {
     rep->filtered = evaluate<detail::FilteredValue>(kind, rep->in);
     // W = 0 exactly means the point is undefined: decide its sign exactly.
     int s = rep->filtered.w.certified_sign(rounding_depth(kind).w.depth);
-    const auto& fw = rep->filtered.w;
-    if (s == 0 && detail::kWideFilterUseful && !(fw.perm >= 0x1p-800 && fw.perm <= 0x1p+800))
+    if (s == 0 && detail::kWideFilterUseful && detail::may_have_left_double_range(rep->filtered.w.perm))
       s = evaluate<detail::WideFilteredValue>(kind, rep->in).w.certified_sign(rounding_depth(kind).w.depth);
     if (s == 0) s = static_cast<int>(evaluate<CGAL::Mpzf>(kind, rep->in).w.sign());
     if (s == 0) return std::nullopt;

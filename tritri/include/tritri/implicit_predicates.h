@@ -106,7 +106,7 @@ int staged_sign(const Poly& poly, int shape, const Middle& middle, const KnownZe
   // may have been the problem: monomials far below 1 (subnormal-scale input, whose
   // products underflow and whose bound is then all underflow floors) or overflow.
   if constexpr (kWideFilterUseful) {
-    if (!(f.perm >= 0x1p-800 && f.perm <= 0x1p+800)) {
+    if (may_have_left_double_range(f.perm)) {
       const int ws = poly(WideFilteredValue{}, WideCoordinates{}).certified_sign(depth);
       if (ws != 0) {
         ++implicit_predicate_stats().filtered;

@@ -19,74 +19,57 @@
 
 namespace tritri::detail {
 
-struct FilteredValue {
-  double v;     // value computed in double
-  double perm;  // bound on the sum of |monomials| (plus underflow floors)
+// BasicFilteredValue<Real>: the filter in any binary floating-point type; the constants
+// are Real's (u = epsilon / 2, underflow floor = numeric_limits<Real>::min(), whose product
+// with u is half the smallest subnormal: the largest absolute error of an underflowing
+// product). For double: u = 2^-53, floor 2^-1022. Exact leaves are doubles.
+template <class Real>
+struct BasicFilteredValue {
+  Real v;     // value computed in Real
+  Real perm;  // bound on the sum of |monomials| (plus underflow floors)
 
-  FilteredValue() = default;                               // uninitialised, like a double
-  FilteredValue(double x) : v(x), perm(x < 0 ? -x : x) {}  // exact leaf
-  FilteredValue(double v_, double p_) : v(v_), perm(p_) {}
+  BasicFilteredValue() = default;  // uninitialised, like a double
+  BasicFilteredValue(double x) : v(x), perm(x < 0 ? -static_cast<Real>(x) : static_cast<Real>(x)) {}  // exact leaf
+  BasicFilteredValue(Real v_, Real p_) : v(v_), perm(p_) {}
 
-  friend FilteredValue operator+(const FilteredValue& a, const FilteredValue& b) {
+  friend BasicFilteredValue operator+(const BasicFilteredValue& a, const BasicFilteredValue& b) {
     return {a.v + b.v, a.perm + b.perm};
   }
-  friend FilteredValue operator-(const FilteredValue& a, const FilteredValue& b) {
+  friend BasicFilteredValue operator-(const BasicFilteredValue& a, const BasicFilteredValue& b) {
     return {a.v - b.v, a.perm + b.perm};
   }
-  friend FilteredValue operator-(const FilteredValue& a) { return {-a.v, a.perm}; }
-  friend FilteredValue operator*(const FilteredValue& a, const FilteredValue& b) {
-    return {a.v * b.v, a.perm * b.perm + 0x1p-1022};
+  friend BasicFilteredValue operator-(const BasicFilteredValue& a) { return {-a.v, a.perm}; }
+  friend BasicFilteredValue operator*(const BasicFilteredValue& a, const BasicFilteredValue& b) {
+    return {a.v * b.v, a.perm * b.perm + std::numeric_limits<Real>::min()};
   }
 
   // +1 / -1 when the exact value's sign is certain, 0 when the filter cannot decide;
   // `depth` is the expression's rounding depth (RoundingDepth below).
   int certified_sign(int depth) const {
-    const double bound = perm * (depth * (0x1p-53 * (1.0 + 0x1p-20)));
+    constexpr Real u = std::numeric_limits<Real>::epsilon() / 2;
+    const Real bound = perm * (depth * (u * (Real(1) + Real(0x1p-20))));
     if (v > bound) return 1;
     if (v < -bound) return -1;
     return 0;  // undecided (also for exact zeros, inf and NaN)
   }
 };
 
+using FilteredValue = BasicFilteredValue<double>;
+
 // WideFilteredValue: the same filter in long double, for the inputs whose monomials
 // leave double's exponent range (subnormal or near-subnormal coordinates, issue 36: a
 // product of two tiny doubles underflows and the double filter can then never decide,
 // however far from zero the exact value is relative to its monomials). Where long double
 // is the x87 80-bit format (exponents to 2^-16382), a product of double-derived values
-// does not underflow. The bound is the one above with u = epsilon/2 of long double and
-// the underflow floor numeric_limits<long double>::min() (min * u = half the smallest
-// subnormal, the largest absolute error of an underflowing product). Exact leaves are
-// doubles (converted exactly). kWideFilterUseful is false where long double is double.
+// does not underflow. kWideFilterUseful is false where long double is double.
+using WideFilteredValue = BasicFilteredValue<long double>;
 inline constexpr bool kWideFilterUseful = std::numeric_limits<long double>::max_exponent > 1024 &&
                                           std::numeric_limits<long double>::min_exponent < -1021;
 
-struct WideFilteredValue {
-  long double v;
-  long double perm;
-
-  WideFilteredValue() = default;
-  WideFilteredValue(double x) : v(x), perm(x < 0 ? -static_cast<long double>(x) : static_cast<long double>(x)) {}
-  WideFilteredValue(long double v_, long double p_) : v(v_), perm(p_) {}
-
-  friend WideFilteredValue operator+(const WideFilteredValue& a, const WideFilteredValue& b) {
-    return {a.v + b.v, a.perm + b.perm};
-  }
-  friend WideFilteredValue operator-(const WideFilteredValue& a, const WideFilteredValue& b) {
-    return {a.v - b.v, a.perm + b.perm};
-  }
-  friend WideFilteredValue operator-(const WideFilteredValue& a) { return {-a.v, a.perm}; }
-  friend WideFilteredValue operator*(const WideFilteredValue& a, const WideFilteredValue& b) {
-    return {a.v * b.v, a.perm * b.perm + std::numeric_limits<long double>::min()};
-  }
-
-  int certified_sign(int depth) const {
-    constexpr long double u = std::numeric_limits<long double>::epsilon() / 2;
-    const long double bound = perm * (depth * (u * (1.0L + 0x1p-20L)));
-    if (v > bound) return 1;
-    if (v < -bound) return -1;
-    return 0;
-  }
-};
+// True when a double filter's bound `perm` says its monomials may have left double's
+// exponent range (underflow floors dominate, or overflow): only then can the long double
+// filter decide what the double one could not, so only then is it tried.
+inline bool may_have_left_double_range(double perm) { return !(perm >= 0x1p-800 && perm <= 0x1p+800); }
 
 // RoundingDepth: evaluates the same expression counting only the roundings per monomial
 // (a sum: the deeper operand plus one; a product: both plus one). The depth depends only
