@@ -21,6 +21,10 @@ JOBS=${JOBS:-$(nproc)}
 
 scripts/setup_debian.sh
 
+# Each stage's banner gives the minutes since the start (CI must stay under 60 minutes).
+start=$SECONDS
+stage() { echo "=== $* (at $(((SECONDS - start) / 60)) min)"; }
+
 # Configure a build dir; pick Ninja only when the dir is new (an existing cache keeps its
 # generator).
 configure() {
@@ -30,12 +34,12 @@ configure() {
   cmake -S "$ROOT" -B "$dir" "${gen[@]}" "$@"
 }
 
-echo "=== [1/6] Release build and tests (build/)"
+stage "[1/6] Release build and tests (build/)"
 configure build -DCMAKE_BUILD_TYPE=Release -DTRITRI_BUILD_TESTS=ON -DTRITRI_BUILD_BENCH=ON -DTRITRI_WERROR=ON
 cmake --build build -j "$JOBS"
 ctest --test-dir build --output-on-failure --no-tests=error -j2
 
-echo "=== [2/6] Sanitizer build and tests (build-asan/)"
+stage "[2/6] Sanitizer build and tests (build-asan/)"
 # Warnings are not errors here: GCC 12 reports -Wmaybe-uninitialized inside libstdc++
 # (<regex>, <functional>) once sanitizer instrumentation changes inlining.
 configure build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRITRI_SANITIZE=ON \
@@ -43,7 +47,7 @@ configure build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRITRI_SANITIZE=ON \
 cmake --build build-asan -j "$JOBS"
 TRITRI_TEST_SCALE=0.1 ctest --test-dir build-asan --output-on-failure --no-tests=error -j2
 
-echo "=== [3/6] Install and build tests/consumer and examples/cpp against the install"
+stage "[3/6] Install and build tests/consumer and examples/cpp against the install"
 prefix=$(mktemp -d)
 trap 'rm -rf "$prefix"' EXIT
 cmake --install build --prefix "$prefix/install"
@@ -56,10 +60,10 @@ cmake -S examples/cpp -B "$prefix/example" -G Ninja -DCMAKE_BUILD_TYPE=Release \
 cmake --build "$prefix/example" -j "$JOBS"
 "$prefix/example/arrange_example"
 
-echo "=== [4/6] Python package, binding tests and example"
+stage "[4/6] Python package, binding tests and example"
 JOBS=$JOBS scripts/test_python.sh
 
-echo "=== [5/6] Collection runner and report tests, tritri-compare on the default meshes"
+stage "[5/6] Collection runner and report tests, tritri-compare on the default meshes"
 VENV=$ROOT/build-python/venv
 "$VENV/bin/python" -m pip install -q matplotlib pytest manifold3d
 "$VENV/bin/python" -m pytest -q -p no:cacheprovider tests/python/test_run_collection.py tests/python/test_report.py \
@@ -67,7 +71,7 @@ VENV=$ROOT/build-python/venv
   tests/python/test_script_args.py tests/python/test_compare_upstream.py \
   tests/python/test_round_safe_sweep.py tests/python/test_coplanar_bench.py \
   tests/python/test_boolean_bench.py tests/python/test_boolean_real_sets.py
-echo "=== docs examples (README.md, docs/*.md) against the install of stage 3"
+stage "docs examples (README.md, docs/*.md) against the install of stage 3"
 CI=${CI:-1} TRITRI_PREFIX="$prefix/install" JOBS=$JOBS \
   "$VENV/bin/python" -m pytest -q -p no:cacheprovider tests/python/test_docs_examples.py
 meshes=$(mktemp -d)
@@ -83,7 +87,7 @@ print(f"tritri-compare: {len(rows)} generated models, all agree")
 PY
 rm -rf "$meshes"
 
-echo "=== [6/6] Fuzz the readers for a fixed number of inputs (build-fuzz/, tests/fuzz/README.md)"
+stage "[6/6] Fuzz the readers for a fixed number of inputs (build-fuzz/, tests/fuzz/README.md)"
 JOBS=$JOBS scripts/fuzz.sh --runs 2000
 
-echo "=== all tests passed"
+stage "all tests passed"

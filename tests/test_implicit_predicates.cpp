@@ -10,7 +10,8 @@
 //   - one point built several ways (LPI = TPI = explicit vertex, LPIs of different lines)
 //     is one point for every predicate;
 //   - the filter, incidence (zeros by construction, detail/incidence.h) and exact stages
-//     are counted; each test asserts that its cases took the incidence shortcut.
+//     are counted; each test asserts that its cases took the incidence shortcut, and each
+//     zero rule of incidence.h is taken on a hand-made case.
 //
 // Scenes (support/implicit_scenes.h) mix integer-grid and random-double coordinates under
 // exact per-axis scalings by 2^k (k in [-60, 60], 2^+-300, rarely 2^+-600, 2^+-900, 2^1000
@@ -327,11 +328,78 @@ TEST(ImplicitPredicates, StatsCountFilterStructuralAndExactStages) {
   EXPECT_EQ(tritri::orient3d(R, S, T, on_plane), Sign::Zero);
   EXPECT_EQ(stats.structural, before.structural + 1);
   EXPECT_EQ(stats.exact, before.exact);
-  // U is on the plane z = 0 too, but is no corner of rst: only the exact stage knows.
+  // U is no corner of rst, but all four have z = 0 by construction (a common coordinate).
   EXPECT_EQ(tritri::orient3d(R, S, U, on_plane), Sign::Zero);
-  EXPECT_EQ(stats.exact, before.exact + 1);
+  EXPECT_EQ(stats.structural, before.structural + 2);
   EXPECT_EQ(tritri::orient3d(R, S, T, far), Sign::Positive);
   EXPECT_EQ(stats.filtered, before.filtered + 1);
+  // On a slanted plane (z = x + y) a point that is no corner of it: only the exact stage
+  // knows.
+  const Point a{0, 0, 0}, b{1, 0, 1}, c{0, 1, 1};
+  const auto on_slant = ImplicitPoint::lpi(Point{0.1, 0.2, -1}, Point{0.3, 0.1, 2}, a, b, c);
+  const auto A = ImplicitPoint::explicit_point(a), B = ImplicitPoint::explicit_point(b),
+             V = ImplicitPoint::explicit_point(2, 3, 5);
+  EXPECT_EQ(tritri::orient3d(A, B, V, on_slant), Sign::Zero);
+  EXPECT_EQ(stats.exact, before.exact + 1);
+  EXPECT_EQ(stats.exact_zero, before.exact_zero + 1);
+}
+
+// Each zero rule of detail/incidence.h beyond a common defining plane or line, on one
+// hand-made case: taken (counted as structural, no exact call) and right; and a nonzero
+// case beside it that the rule must not claim.
+TEST(ImplicitPredicates, EachIncidenceRuleIsTaken) {
+  auto& stats = tritri::implicit_predicate_stats();
+  auto structural_and_no_exact = [&](const tritri::ImplicitPredicateStats& before) {
+    return stats.structural == before.structural + 1 && stats.exact == before.exact;
+  };
+  // Generic corners (no common coordinate, no axis-aligned plane).
+  const Point a{0.1, 0.2, 0.3}, b{1.3, 0.4, 2.1}, c{0.7, 1.9, 0.2}, d{2.2, -0.7, 1.1};
+  const Point r{5.1, 0.3, -2.2}, s{-1.7, 4.2, 3.3}, t{0.4, -3.1, 6.5};  // a plane crossing ab
+  const auto A = ImplicitPoint::explicit_point(a), B = ImplicitPoint::explicit_point(b),
+             C = ImplicitPoint::explicit_point(c), D = ImplicitPoint::explicit_point(d);
+  const auto on_ab = ImplicitPoint::lpi(a, b, r, s, t);
+  const auto on_ba = ImplicitPoint::lpi(b, a, s, t, r);  // the same point, built again
+  {  // Corner union: A, B, C and a point of line ab lie on plane abc, which no operand has.
+    const auto before = stats;
+    EXPECT_EQ(tritri::orient3d(A, on_ab, B, C), Sign::Zero);
+    EXPECT_TRUE(structural_and_no_exact(before));
+    EXPECT_NE(tritri::orient3d(A, on_ab, C, D), Sign::Zero);  // four corners: not claimed
+  }
+  {  // A repeated point: on_ab and on_ba are one point.
+    const auto before = stats;
+    EXPECT_EQ(tritri::orient3d(on_ab, C, D, on_ba), Sign::Zero);
+    EXPECT_TRUE(structural_and_no_exact(before));
+    const auto before2 = stats;
+    EXPECT_EQ(tritri::orient2d(on_ba, D, on_ab, Plane::ZX), Sign::Zero);
+    EXPECT_TRUE(structural_and_no_exact(before2));
+  }
+  {  // A common plane that the projection flattens: the vertical plane through a, e, f
+     // (it contains the z direction) is a line in XY, not in YZ.
+    const Point e{1.5, 0.9, 0.3}, f{0.1, 0.2, 4.7};
+    const auto p1 = ImplicitPoint::lpi(Point{0.3, -1.2, 0.5}, Point{1.9, 2.8, 1.7}, a, e, f);
+    const auto p2 = ImplicitPoint::lpi(Point{-0.6, 0.4, 2.5}, Point{2.3, 0.7, -1.1}, e, f, a);
+    const auto p3 = ImplicitPoint::lpi(Point{0.2, 2.2, 3.5}, Point{1.1, -1.3, 0.1}, f, a, e);
+    const auto before = stats;
+    EXPECT_EQ(tritri::orient2d(p1, p2, p3, Plane::XY), Sign::Zero);
+    EXPECT_TRUE(structural_and_no_exact(before));
+    const auto before2 = stats;
+    EXPECT_NE(tritri::orient2d(p1, p2, p3, Plane::YZ), Sign::Zero);
+    EXPECT_EQ(stats.structural, before2.structural);
+  }
+  {  // A coordinate all share on a projection axis: three points on the plane x = 2 (LPIs
+     // of lines crossing it, on different planes), in XY: one line x = 2.
+    const Point x0{2, 0, 0}, x1{2, 1, 0}, x2{2, 0, 1}, x3{2, 3, 5};
+    const auto q1 = ImplicitPoint::lpi(Point{0.3, 0.2, 0.1}, Point{3.9, 1.8, 1.7}, x0, x1, x2);
+    const auto q2 = ImplicitPoint::lpi(Point{-0.6, 0.4, 2.5}, Point{2.3, 0.7, -1.1}, x1, x3, x0);
+    const auto Q3 = ImplicitPoint::explicit_point(x3);
+    const auto before = stats;
+    EXPECT_EQ(tritri::orient2d(q1, Q3, q2, Plane::XY), Sign::Zero);
+    EXPECT_TRUE(structural_and_no_exact(before));
+    const auto before2 = stats;
+    EXPECT_EQ(tritri::orient3d(q1, Q3, q2, ImplicitPoint::explicit_point(x1)), Sign::Zero);
+    EXPECT_TRUE(structural_and_no_exact(before2));
+    EXPECT_NE(tritri::orient2d(q1, Q3, q2, Plane::YZ), Sign::Zero);
+  }
 }
 
 }  // namespace

@@ -102,6 +102,11 @@ class ImplicitPoint {
 
   // Sign of W (+1 / -1) for implicit points, +1 for explicit ones.
   int w_sign() const noexcept { return rep_ ? rep_->w_sign : 1; }
+  // True when a coordinate of the point (explicit) or of a defining point is nonzero and
+  // below 2^-400 in magnitude: products of such numbers underflow, so the double filters
+  // often fail on predicates of this point and the predicates try the long double one
+  // sooner (a speed hint; every stage is exact).
+  bool tiny_scale() const noexcept { return rep_ ? rep_->tiny : is_tiny(xyz_); }
   // Filtered homogeneous coordinates: the cached ones, or (x, y, z, 1) for explicit points.
   detail::Homogeneous<detail::FilteredValue> homogeneous_filtered() const noexcept {
     if (!rep_) return {xyz_[0], xyz_[1], xyz_[2], 1.0};
@@ -165,6 +170,7 @@ class ImplicitPoint {
   // kind (5 for an LPI, 9 for a TPI: pipelines hold millions of LPIs).
   struct Rep {
     Kind kind;
+    bool tiny;  // tiny_scale()
     const Coords* in;  // the defining points, in the block below
     detail::Homogeneous<detail::FilteredValue> filtered;
     int w_sign;
@@ -179,6 +185,12 @@ class ImplicitPoint {
   struct RepWith : Rep {
     std::array<Coords, N> storage;
   };
+
+  static bool is_tiny(const Coords& c) noexcept {
+    for (double x : c)
+      if (x != 0 && std::fabs(x) < 0x1p-400) return true;
+    return false;
+  }
 
   static const Coords& coords(const Coords& c) { return c; }
   static const Coords& coords(const ImplicitPoint& p) {
@@ -212,6 +224,7 @@ class ImplicitPoint {
       rep = std::move(r);
     }
     rep->kind = kind;
+    rep->tiny = std::any_of(list.begin(), list.end(), [](const Coords& c) { return is_tiny(c); });
     rep->filtered = evaluate<detail::FilteredValue>(kind, rep->in);
     // W = 0 exactly means the point is undefined: decide its sign exactly.
     int s = rep->filtered.w.certified_sign(rounding_depth(kind).w.depth);

@@ -25,6 +25,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <type_traits>
 
 #include "tritri/detail/incidence.h"
@@ -40,6 +41,7 @@ namespace tritri {
 struct ImplicitPredicateStats {
   std::uint64_t filtered = 0;  // decided by the floating-point filter
   std::uint64_t exact = 0;     // needed the exact stage
+  std::uint64_t exact_zero = 0;  // needed the exact stage, which found 0 (a zero incidence.h missed)
   std::uint64_t wide = 0;        // decided by the long double filter (also counted in filtered)
   std::uint64_t structural = 0;  // exactly 0 by construction (detail/incidence.h)
 };
@@ -76,47 +78,68 @@ struct ExactCoordinates {  // only called on implicit points
 // Evaluates the sign of poly(T-tag, coordinate getter): `middle` (another filter) first,
 // then the filter on the cached (absolute) coordinates, then `known_zero()` (a structural
 // test, true only when the value is exactly 0), then the long double filter when the
-// double one may have underflowed or overflowed, then exactly.
+// double one may have underflowed or overflowed, then exactly. With `tiny_scale`
+// operands (ImplicitPoint::tiny_scale: subnormal-scale coordinates) the order is cached
+// filter, long double filter, known_zero(), `middle`: there the double filters mostly
+// fail alike and the long double one decides most calls. Each stage is exact or
+// certified, so the order changes the time only, never the sign.
 // `shape` (shape_of, below 81) names the operand kinds: the expression's rounding depth
 // is computed once per call site and shape, then read from a cache.
 template <class Poly, class Middle, class KnownZero>
-int staged_sign(const Poly& poly, int shape, const Middle& middle, const KnownZero& known_zero) {
+int staged_sign(const Poly& poly, int shape, const Middle& middle, const KnownZero& known_zero,
+                bool tiny_scale = false) {
   static std::atomic<int> depth_of_shape[81] = {};  // 0: not computed yet
   int depth = depth_of_shape[shape].load(std::memory_order_relaxed);
   if (depth == 0) {
     depth = poly(RoundingDepth{0.0}, CoordinateDepths{}).depth + 1;  // +1: never 0 (cache marker)
     depth_of_shape[shape].store(depth, std::memory_order_relaxed);
   }
-  // First `middle` (the offset filter: decides near points, which the cached absolute
+  // `middle` (the offset filter: decides near points, which the cached absolute
   // coordinates rarely do; measured faster first), in poly's sign convention, 0 if
-  // undecided; then the filter on the cached coordinates.
-  const int m = middle();
-  if (m != 0) return m;
+  // undecided.
+  if (!tiny_scale) {
+    const int m = middle();
+    if (m != 0) return m;
+  }
   const FilteredValue f = poly(FilteredValue{}, FilteredCoordinates{});
   const int s = f.certified_sign(depth);
   if (s != 0) {
     ++implicit_predicate_stats().filtered;
     return s;
   }
+  // The same filter in long double (WideFilteredValue), only where double's exponent range
+  // may have been the problem: monomials far below 1 (subnormal-scale input, whose
+  // products underflow and whose bound is then all underflow floors) or overflow.
+  auto wide_sign = [&] {
+    if constexpr (kWideFilterUseful) {
+      if (may_have_left_double_range(f.perm)) {
+        const int ws = poly(WideFilteredValue{}, WideCoordinates{}).certified_sign(depth);
+        if (ws != 0) {
+          ++implicit_predicate_stats().filtered;
+          ++implicit_predicate_stats().wide;
+          return ws;
+        }
+      }
+    }
+    return 0;
+  };
+  if (tiny_scale) {
+    if (const int ws = wide_sign()) return ws;
+  }
   if (known_zero()) {
     ++implicit_predicate_stats().structural;
     return 0;
   }
-  // The same filter in long double (WideFilteredValue), only where double's exponent range
-  // may have been the problem: monomials far below 1 (subnormal-scale input, whose
-  // products underflow and whose bound is then all underflow floors) or overflow.
-  if constexpr (kWideFilterUseful) {
-    if (may_have_left_double_range(f.perm)) {
-      const int ws = poly(WideFilteredValue{}, WideCoordinates{}).certified_sign(depth);
-      if (ws != 0) {
-        ++implicit_predicate_stats().filtered;
-        ++implicit_predicate_stats().wide;
-        return ws;
-      }
-    }
+  if (!tiny_scale) {
+    if (const int ws = wide_sign()) return ws;
+  } else {
+    const int m = middle();
+    if (m != 0) return m;
   }
   ++implicit_predicate_stats().exact;
-  return static_cast<int>(poly(CGAL::Mpzf{}, ExactCoordinates{}).sign());
+  const int e = static_cast<int>(poly(CGAL::Mpzf{}, ExactCoordinates{}).sign());
+  if (e == 0) ++implicit_predicate_stats().exact_zero;
+  return e;
 }
 
 template <class Poly, class Middle>
@@ -204,6 +227,12 @@ T det3(const std::array<T, 3>& r0, const std::array<T, 3>& r1, const std::array<
          r0[2] * (r1[0] * r2[1] - r1[1] * r2[0]);
 }
 
+inline bool any_tiny_scale(std::initializer_list<const ImplicitPoint*> pts) {
+  for (const ImplicitPoint* p : pts)
+    if (p->tiny_scale()) return true;
+  return false;
+}
+
 inline int first_explicit(std::initializer_list<const ImplicitPoint*> pts) {
   int i = 0;
   for (const ImplicitPoint* p : pts) {
@@ -218,6 +247,16 @@ inline std::array<int, 2> plane_axes(Plane plane) {
   return {i, (i + 1) % 3};
 }
 
+// The sign of p_k - q_k when known without arithmetic: one point built twice (a crossing
+// found from both triangles), or both on planes (or lines) constant in k, by construction.
+inline std::optional<int> compare_coordinate_by_construction(const ImplicitPoint& p, const ImplicitPoint& q, int k) {
+  if (same_point_by_construction(p, q)) return 0;
+  if (const auto pk = known_coordinate(p, k)) {
+    if (const auto qk = known_coordinate(q, k)) return *pk < *qk ? -1 : (*pk > *qk ? 1 : 0);
+  }
+  return std::nullopt;
+}
+
 // sign(X_p W_q - X_q W_p) along axis k, times sign(W_p W_q): the sign of p_k - q_k.
 // with_offset = false skips the offset filter stage (for callers that already tried it).
 inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, int k, bool with_offset = true) {
@@ -225,17 +264,9 @@ inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, in
     const double a = p.approx()[k], b = q.approx()[k];
     return a < b ? -1 : (a > b ? 1 : 0);
   }
-  // One point built twice (a crossing found from both triangles), or both on planes (or
-  // lines) constant in k, by construction: no arithmetic.
-  if (same_point_by_construction(p, q)) {
+  if (const auto known = compare_coordinate_by_construction(p, q, k)) {
     ++implicit_predicate_stats().structural;
-    return 0;
-  }
-  if (const auto pk = known_coordinate(p, k)) {
-    if (const auto qk = known_coordinate(q, k)) {
-      ++implicit_predicate_stats().structural;
-      return *pk < *qk ? -1 : (*pk > *qk ? 1 : 0);
-    }
+    return *known;
   }
   auto offset_stage = [&] {
     if (!with_offset) return 0;
@@ -271,7 +302,7 @@ inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, in
         const T* qc[3] = {&hq.x, &hq.y, &hq.z};
         return *pc[k] * hq.w - *qc[k] * hp.w;
       },
-      shape_of({&p, &q}), offset_stage);
+      shape_of({&p, &q}), offset_stage, [] { return false; }, any_tiny_scale({&p, &q}));
   return s * p.w_sign() * q.w_sign();
 }
 
@@ -300,7 +331,8 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
         },
         detail::shape_of({&a, &b, &c, &d}));
   };
-  auto on_one_plane = [&] { return detail::on_common_plane({&a, &b, &c, &d}); };
+  auto on_one_plane = [&] { return detail::orient3d_known_zero({&a, &b, &c, &d}); };
+  const bool tiny = detail::any_tiny_scale({&a, &b, &c, &d});
   if (e >= 0) {
     // orient3d = (-1)^e det3(rows W_i (p_i - p_e), i != e, in order) * prod sign(W_i).
     const auto& ref = pts[e]->approx();
@@ -315,7 +347,7 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
                               detail::scaled_difference3<T>(p2, ref, get));
         },
         detail::shape_of({&a, &b, &c, &d}), [&] { return e % 2 ? offset_det4() : -offset_det4(); },
-        on_one_plane);
+        on_one_plane, tiny);
     return detail::to_sign((e % 2 ? -s : s) * w);
   }
   const int s = detail::staged_sign(
@@ -325,7 +357,7 @@ inline Sign orient3d(const ImplicitPoint& a, const ImplicitPoint& b, const Impli
         return detail::det4<T>(detail::row4<T>(get(a)), detail::row4<T>(get(b)), detail::row4<T>(get(c)),
                                detail::row4<T>(get(d)));
       },
-      detail::shape_of({&a, &b, &c, &d}), offset_det4, on_one_plane);
+      detail::shape_of({&a, &b, &c, &d}), offset_det4, on_one_plane, tiny);
   return detail::to_sign(-s * w);
 }
 
@@ -355,8 +387,8 @@ inline Sign orient2d_staged(const ImplicitPoint& a, const ImplicitPoint& b, cons
         },
         detail::shape_of({&a, &b, &c}));
   };
-  // Collinear in space by construction: collinear in every projection.
-  auto on_one_line = [&] { return detail::on_common_line({&a, &b, &c}); };
+  auto on_one_line = [&] { return detail::orient2d_known_zero({&a, &b, &c}, plane); };
+  const bool tiny = detail::any_tiny_scale({&a, &b, &c});
   if (e >= 0) {
     const auto& ref = pts[e]->approx();
     const int s = detail::staged_sign(
@@ -368,7 +400,8 @@ inline Sign orient2d_staged(const ImplicitPoint& a, const ImplicitPoint& b, cons
             if (i != e) rows[n++] = detail::scaled_difference<T>(*pts[i], ref, axes, get);
           return rows[0][0] * rows[1][1] - rows[0][1] * rows[1][0];
         },
-        detail::shape_of({&a, &b, &c}), [&] { return e % 2 ? -offset_det3() : offset_det3(); }, on_one_line);
+        detail::shape_of({&a, &b, &c}), [&] { return e % 2 ? -offset_det3() : offset_det3(); }, on_one_line,
+        tiny);
     return detail::to_sign((e % 2 ? -s : s) * w);
   }
   const int s = detail::staged_sign(
@@ -382,7 +415,7 @@ inline Sign orient2d_staged(const ImplicitPoint& a, const ImplicitPoint& b, cons
         }
         return detail::det3(rows[0], rows[1], rows[2]);
       },
-      detail::shape_of({&a, &b, &c}), offset_det3, on_one_line);
+      detail::shape_of({&a, &b, &c}), offset_det3, on_one_line, tiny);
   return detail::to_sign(s * w);
 }
 }  // namespace detail
@@ -451,8 +484,10 @@ inline int compare_xyz(const ImplicitPoint& p, const ImplicitPoint& q) {
     return a < b ? -1 : (b < a ? 1 : 0);
   }
   // Per axis: the filter on the cached absolute coordinates (cheap; decides points that
-  // are far apart, most comparisons of a sort), then on offset coordinates (computed once
-  // for all axes: they decide near points), then compare_coordinate (exact).
+  // are far apart, most comparisons of a sort), then the comparison known by
+  // construction (equal coordinates, which no filter decides), then the filter on offset
+  // coordinates (computed once for all axes: they decide near points), then
+  // compare_coordinate (exact).
   const int w = p.w_sign() * q.w_sign();
   const int shape = detail::shape_of({&p, &q});
   static std::atomic<int> depth_of_shape[2][9] = {};
@@ -472,6 +507,9 @@ inline int compare_xyz(const ImplicitPoint& p, const ImplicitPoint& q) {
     const auto& dq = ImplicitPoint::rounding_depth(q.kind());
     return (dp.x * dq.w - dq.x * dp.w).depth;
   });
+  // With tiny-scale operands the offset filter is left to compare_coordinate's last
+  // filter stage (staged_sign): the long double one decides first there.
+  const bool tiny = p.tiny_scale() || q.tiny_scale();
   const ImplicitPoint::Coords* origin = nullptr;
   detail::Homogeneous<FilteredValue> off_p{}, off_q{};
   int off_depth = 0;
@@ -480,6 +518,14 @@ inline int compare_xyz(const ImplicitPoint& p, const ImplicitPoint& q) {
     const FilteredValue* aq[3] = {&abs_q.x, &abs_q.y, &abs_q.z};
     int c = (*ap[k] * abs_q.w - *aq[k] * abs_p.w).certified_sign(abs_depth);
     if (c == 0) {
+      // Equal coordinates, which no filter decides, are mostly known by construction.
+      if (const auto known = detail::compare_coordinate_by_construction(p, q, k)) {
+        ++implicit_predicate_stats().structural;
+        if (*known != 0) return *known;
+        continue;
+      }
+    }
+    if (c == 0 && !tiny) {
       if (!origin) {
         origin = q.is_explicit() ? &q.approx() : &detail::offset_origin({&p});
         off_p = p.offset_homogeneous<FilteredValue>(*origin);
@@ -498,7 +544,7 @@ inline int compare_xyz(const ImplicitPoint& p, const ImplicitPoint& q) {
       ++implicit_predicate_stats().filtered;
       c *= w;
     } else {
-      c = detail::compare_coordinate(p, q, k, /*with_offset=*/origin == nullptr);
+      c = detail::compare_coordinate(p, q, k, /*with_offset=*/origin == nullptr || tiny);
     }
     if (c != 0) return c;
   }

@@ -8,7 +8,11 @@
 //                             (orient2d of them, in any projection, is 0);
 //   known_coordinate(p, k)    p's k-th coordinate as a double when p is explicit or lies
 //                             on a line or plane that is constant in k;
-//   same_point_by_construction(p, q)   LPIs of one line and plane, TPIs of one set of planes.
+//   same_point_by_construction(p, q)   LPIs of one line and plane, TPIs of one set of planes;
+//   orient3d_known_zero(points), orient2d_known_zero(points, plane)   the predicates' zeros
+//                             that follow from the above: a repeated point, a common plane
+//                             (in 2D: one the projection flattens to a line), a common line,
+//                             a coordinate every point shares.
 // What a point lies on: an explicit point on every plane and line it is a defining corner
 // of; an LPI (p, q, r, s, t) on its line pq and its plane rst, on every plane that has
 // p and q as corners and on that plane's meet with rst; a TPI on its three planes and on
@@ -30,6 +34,7 @@
 #include <initializer_list>
 #include <optional>
 
+#include "tritri/double_predicates.h"
 #include "tritri/implicit_point.h"
 
 namespace tritri::detail {
@@ -105,17 +110,42 @@ inline int constructed_lines(const ImplicitPoint& p, ConstructedLine out[3]) {
   return 3;
 }
 
-inline bool on_common_plane(std::initializer_list<const ImplicitPoint*> points) {
+// Three corners whose affine hull holds every point, when known: a defining plane of
+// some operand that all the others lie on; else, when no operand is a TPI, the explicit
+// points and the LPIs' line corners if they are at most three (repeated to fill three
+// when fewer: then all lie on one line or are one point).
+inline std::optional<PlaneCorners> common_plane(std::initializer_list<const ImplicitPoint*> points) {
   for (const ImplicitPoint* candidate : points) {
     PlaneCorners planes[3];
     const int n = defining_planes(*candidate, planes);
     for (int k = 0; k < n; ++k) {
       bool all = true;
       for (const ImplicitPoint* p : points) all = all && (p == candidate || lies_on_plane(*p, planes[k]));
-      if (all) return true;
+      if (all) return planes[k];
     }
   }
-  return false;
+  const Corner* corners[3] = {};
+  int count = 0;
+  auto add = [&](const Corner& c) {
+    for (int i = 0; i < count; ++i)
+      if (*corners[i] == c) return true;
+    if (count == 3) return false;
+    corners[count++] = &c;
+    return true;
+  };
+  for (const ImplicitPoint* p : points) {
+    if (p->is_explicit()) {
+      if (!add(p->approx())) return std::nullopt;
+    } else if (p->kind() != ImplicitPoint::Kind::LPI || !add(p->input(0)) || !add(p->input(1))) {
+      return std::nullopt;
+    }
+  }
+  if (count == 0) return std::nullopt;
+  return PlaneCorners{corners[0], corners[count > 1 ? 1 : 0], corners[count > 2 ? 2 : count - 1]};
+}
+
+inline bool on_common_plane(std::initializer_list<const ImplicitPoint*> points) {
+  return common_plane(points).has_value();
 }
 
 // The same point by construction: two LPIs of one line (two corners, in either order)
@@ -206,6 +236,41 @@ inline bool on_common_line(std::initializer_list<const ImplicitPoint*> points) {
     }
   }
   return on_common_axis_line(points);
+}
+
+// Two operands that are one point: the same object, equal explicit coordinates, or built
+// twice from the same line and plane(s).
+inline bool repeats_a_point(std::initializer_list<const ImplicitPoint*> points) {
+  for (auto i = points.begin(); i != points.end(); ++i)
+    for (auto j = i + 1; j != points.end(); ++j) {
+      const ImplicitPoint& p = **i;
+      const ImplicitPoint& q = **j;
+      if (&p == &q || (p.is_explicit() && q.is_explicit() && p.approx() == q.approx()) ||
+          same_point_by_construction(p, q))
+        return true;
+    }
+  return false;
+}
+
+// orient3d of four points is 0 by construction: a repeated point, a common plane, or a
+// coordinate all of them share (a common axis-aligned plane).
+inline bool orient3d_known_zero(std::initializer_list<const ImplicitPoint*> points) {
+  if (repeats_a_point(points) || on_common_plane(points)) return true;
+  for (int k = 0; k < 3; ++k)
+    if (common_known_coordinate(points, k)) return true;
+  return false;
+}
+
+// orient2d of three points in the projection dropping one axis is 0 by construction: a
+// repeated point, a common line, a common plane that the projection flattens to a line
+// (its corners' orient2d there is 0, decided exactly on doubles), or a coordinate all of
+// them share on one of the projection's axes.
+inline bool orient2d_known_zero(std::initializer_list<const ImplicitPoint*> points, Plane plane) {
+  if (repeats_a_point(points) || on_common_line(points)) return true;
+  const int i = plane == Plane::XY ? 0 : (plane == Plane::YZ ? 1 : 2);
+  if (common_known_coordinate(points, i) || common_known_coordinate(points, (i + 1) % 3)) return true;
+  const auto corners = common_plane(points);
+  return corners && orient2d(*(*corners)[0], *(*corners)[1], *(*corners)[2], plane) == Sign::Zero;
 }
 
 }  // namespace tritri::detail
