@@ -170,8 +170,7 @@ inline Sign orient2d(double ax, double ay, double bx, double by, double cx, doub
 // orient2d of 3D points projected onto `plane` (see Plane for the axis order).
 inline Sign orient2d(const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& c,
                      Plane plane) {
-  const int i = plane == Plane::XY ? 0 : (plane == Plane::YZ ? 1 : 2);
-  const int j = (i + 1) % 3;
+  const auto [i, j] = plane_axes(plane);
   return orient2d(a[i], a[j], b[i], b[j], c[i], c[j]);
 }
 

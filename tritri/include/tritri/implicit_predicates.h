@@ -49,17 +49,10 @@ inline std::optional<int> compare_coordinate_by_construction(const ImplicitPoint
   return std::nullopt;
 }
 
-// sign(X_p W_q - X_q W_p) along axis k, times sign(W_p W_q): the sign of p_k - q_k.
-// with_offset = false skips the offset filter stage (for callers that already tried it).
-inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, int k, bool with_offset = true) {
-  if (p.is_explicit() && q.is_explicit()) {
-    const double a = p.approx()[k], b = q.approx()[k];
-    return a < b ? -1 : (a > b ? 1 : 0);
-  }
-  if (const auto known = compare_coordinate_by_construction(p, q, k)) {
-    ++implicit_predicate_stats().structural;
-    return *known;
-  }
+// The sign of p_k - q_k by the filters and the exact stage, for callers that already
+// asked compare_coordinate_by_construction (not both explicit). with_offset = false skips
+// the offset filter stage (for callers that already tried it).
+inline int compare_coordinate_staged(const ImplicitPoint& p, const ImplicitPoint& q, int k, bool with_offset) {
   auto offset_stage = [&] {
     if (!with_offset) return 0;
     const auto& o = q.is_explicit() ? q.approx() : offset_origin({&p});
@@ -96,6 +89,19 @@ inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, in
       },
       shape_of({&p, &q}), offset_stage, [] { return false; }, any_tiny_scale({&p, &q}));
   return s * p.w_sign() * q.w_sign();
+}
+
+// sign(X_p W_q - X_q W_p) along axis k, times sign(W_p W_q): the sign of p_k - q_k.
+inline int compare_coordinate(const ImplicitPoint& p, const ImplicitPoint& q, int k) {
+  if (p.is_explicit() && q.is_explicit()) {
+    const double a = p.approx()[k], b = q.approx()[k];
+    return a < b ? -1 : (a > b ? 1 : 0);
+  }
+  if (const auto known = compare_coordinate_by_construction(p, q, k)) {
+    ++implicit_predicate_stats().structural;
+    return *known;
+  }
+  return compare_coordinate_staged(p, q, k, /*with_offset=*/true);
 }
 
 }  // namespace detail
@@ -158,7 +164,7 @@ namespace detail {
 inline Sign orient2d_staged(const ImplicitPoint& a, const ImplicitPoint& b, const ImplicitPoint& c, Plane plane,
                             bool with_offset) {
   if (a.is_explicit() && b.is_explicit() && c.is_explicit()) return orient2d(a.approx(), b.approx(), c.approx(), plane);
-  const auto axes = detail::plane_axes(plane);
+  const auto axes = plane_axes(plane);
   const ImplicitPoint* pts[3] = {&a, &b, &c};
   const int e = detail::first_explicit({&a, &b, &c});
   const int w = a.w_sign() * b.w_sign() * c.w_sign();
@@ -238,7 +244,7 @@ inline Sign orient2d(const OffsetPoint& a, const OffsetPoint& b, const OffsetPoi
   const ImplicitPoint& pa = *a.point;
   const ImplicitPoint& pb = *b.point;
   const ImplicitPoint& pc = *c.point;
-  const auto axes = detail::plane_axes(plane);
+  const auto axes = plane_axes(plane);
   const int shape = detail::shape_of({&pa, &pb, &pc});
   static std::atomic<int> depth_of_shape[27] = {};
   int depth = depth_of_shape[shape].load(std::memory_order_relaxed);
@@ -336,7 +342,7 @@ inline int compare_xyz(const ImplicitPoint& p, const ImplicitPoint& q) {
       ++implicit_predicate_stats().filtered;
       c *= w;
     } else {
-      c = detail::compare_coordinate(p, q, k, /*with_offset=*/origin == nullptr || tiny);
+      c = detail::compare_coordinate_staged(p, q, k, /*with_offset=*/origin == nullptr || tiny);
     }
     if (c != 0) return c;
   }

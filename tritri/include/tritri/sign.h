@@ -4,6 +4,7 @@
 // the axis-aligned plane an orient2d projects onto.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 namespace tritri {
@@ -17,6 +18,12 @@ enum class Sign : std::int8_t { Negative = -1, Zero = 0, Positive = 1 };
 // the positive side of the dropped axis:
 //   XY -> (x, y) seen from +z,  YZ -> (y, z) seen from +x,  ZX -> (z, x) seen from +y.
 enum class Plane : std::int8_t { XY = 0, YZ = 1, ZX = 2 };
+
+// The two axes of a projection, in its order (XY -> {0, 1}, YZ -> {1, 2}, ZX -> {2, 0}).
+constexpr std::array<int, 2> plane_axes(Plane plane) noexcept {
+  const int i = static_cast<int>(plane);
+  return {i, (i + 1) % 3};
+}
 
 constexpr int to_int(Sign s) noexcept { return static_cast<int>(s); }
 constexpr Sign operator-(Sign s) noexcept { return static_cast<Sign>(-static_cast<int>(s)); }

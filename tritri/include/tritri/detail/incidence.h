@@ -267,8 +267,8 @@ inline bool orient3d_known_zero(std::initializer_list<const ImplicitPoint*> poin
 // them share on one of the projection's axes.
 inline bool orient2d_known_zero(std::initializer_list<const ImplicitPoint*> points, Plane plane) {
   if (repeats_a_point(points) || on_common_line(points)) return true;
-  const int i = plane == Plane::XY ? 0 : (plane == Plane::YZ ? 1 : 2);
-  if (common_known_coordinate(points, i) || common_known_coordinate(points, (i + 1) % 3)) return true;
+  const auto axes = plane_axes(plane);
+  if (common_known_coordinate(points, axes[0]) || common_known_coordinate(points, axes[1])) return true;
   const auto corners = common_plane(points);
   return corners && orient2d(*(*corners)[0], *(*corners)[1], *(*corners)[2], plane) == Sign::Zero;
 }

@@ -227,10 +227,6 @@ inline int first_explicit(std::initializer_list<const ImplicitPoint*> pts) {
   return -1;
 }
 
-inline std::array<int, 2> plane_axes(Plane plane) {
-  const int i = plane == Plane::XY ? 0 : (plane == Plane::YZ ? 1 : 2);
-  return {i, (i + 1) % 3};
-}
 
 }  // namespace detail
 }  // namespace tritri
