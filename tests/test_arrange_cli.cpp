@@ -242,7 +242,7 @@ TEST(ArrangeCli, RoundSafeWritesAMeshThatIsAnArrangement) {
   tritri_test::TempDir dir;
   // Five copies take minutes in the sanitizer build (scaled down): three there.
   const arrangements::TriangleSoup soup = arrangements::rotated_copies(
-      arrangements::uv_sphere({0.1, 0.2, 0.3}, 1.0, 12, 24), tritri_test::test_scale() < 1 ? 3 : 5);
+      arrangements::uv_sphere({0.1, 0.2, 0.3}, 1.0, 12, 24), tritri_test::scaled_down() ? 3 : 5);
   const std::string in = (dir.path() / "copies.off").string();
   arrangements::write_off(in, soup.vertices, soup.triangles);
   const std::string safe = (dir.path() / "safe.obj").string(), near = (dir.path() / "near.obj").string();

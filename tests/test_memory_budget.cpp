@@ -62,7 +62,7 @@ void sweep(const std::vector<std::string>& mode, const TempDir& dir) {
   // third budget: still stops in the early stages and one fit.
   const std::vector<int> all = {1, 2, 4, 8, 16, 24, 32, 48, 64, 96, 128, 192, 256, 2000};
   const std::vector<int> few = {1, 8, 32, 96, 2000};
-  for (const int mb : tritri_test::test_scale() < 1 ? few : all) {
+  for (const int mb : tritri_test::scaled_down() ? few : all) {
     std::filesystem::remove(budget_out);
     std::vector<std::string> budget_args = mode;
     budget_args.insert(budget_args.end(),

@@ -91,7 +91,7 @@ TEST(RoundSafe, RotatedCopiesOfASphere) {
   // k = 5 spends about 12 s (Release) in rerouting before a coarser grid settles it: not
   // at reduced test scale (the sanitizer run).
   std::vector<int> copies{2, 5};
-  if (tritri_test::test_scale() < 1) copies.pop_back();
+  if (tritri_test::scaled_down()) copies.pop_back();
   for (int k : copies) {
     const TriangleSoup soup = rotated_copies(uv_sphere({0.1, 0.2, 0.3}, 1.0, 12, 24), k);
     const ArrangeResult first = arrange(soup, ArrangeOptions{});
@@ -143,7 +143,7 @@ TEST(RoundSafe, EmberPairsAreReroutedAtTheirSlivers) {
   const std::string command = "python3 '" + script.string() + "' '" + tmp.path().string() + "' > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   std::vector<std::string> names{"ember-1063852-72214", "ember-88566-58011"};
-  if (tritri_test::test_scale() < 1) names.resize(1);
+  if (tritri_test::scaled_down()) names.resize(1);
   for (const std::string& name : names) {
     const ArrangeResult first = arrange(load_triangle_soup((tmp.path() / (name + ".off")).string()), ArrangeOptions{});
     ASSERT_GT(first.stats.intersection_points, 0u) << name;

@@ -201,7 +201,7 @@ TEST(RoundSafeInput, ShiftedCopiesOfSpheresSettle) {
   // Refused before coarse merges: no grid up to 2^32 ulps holds the crossings.
   const Vec3 axis{0.3 / std::sqrt(0.98), 0.5 / std::sqrt(0.98), 0.8 / std::sqrt(0.98)}, direction{0.6, 0.0, 0.8};
   std::vector<std::pair<int, int>> sizes = {{20, 40}, {30, 60}};
-  if (tritri_test::test_scale() < 1) sizes.pop_back();  // the sanitizer build: minutes each
+  if (tritri_test::scaled_down()) sizes.pop_back();  // the sanitizer build: minutes each
   for (const auto& [rings, segments] : sizes)
     expect_shifted_copy_settled(with_shifted_copy(uv_sphere({0.5, 1.0, 1.5}, 1.0, rings, segments), axis, direction),
                                 "sphere " + std::to_string(rings) + " x " + std::to_string(segments) + " shifted");
@@ -216,7 +216,7 @@ TEST(RoundSafeInput, ShiftedCopiesOfQuickCsgMeshesSettle) {
   const fs::path dir = tritri_test::shared_meshes_dir() / "thingicsg" / "QuickCSG";
   int nudged_apart = 0;
   std::vector<fs::path> files = {dir / "T1" / "t1_0.off", dir / "T1" / "t1_48.off", dir / "TwoCylinders" / "cyl1.off"};
-  if (tritri_test::test_scale() < 1) files.pop_back();  // the sanitizer build: cyl1 takes 85% of the time
+  if (tritri_test::scaled_down()) files.pop_back();  // the sanitizer build: cyl1 takes 85% of the time
   for (const fs::path& file : files) {
     TRITRI_REQUIRE_DATA(file);
     nudged_apart += expect_shifted_copy_settled(with_shifted_copy(load_triangle_soup(file.string()), axis, direction),

@@ -5,6 +5,8 @@
 //                       (default 1.0; the sanitizer CI uses 0.1); unset, empty, not a
 //                       number, not positive or not finite: 1.0
 //   scaled_count(n)     n times the scale, rounded, at least 1
+//   scaled_down()       the scale is below 1 (the sanitizer stage): the longest tests
+//                       drop their largest inputs
 //   seed_for(salt)      a seed per test: TRITRI_TEST_SEED (an integer) or the default
 //                       base, mixed with the test's salt, so that one variable changes
 //                       every seed while runs stay reproducible
@@ -28,6 +30,8 @@ inline double test_scale() {
 inline long long scaled_count(long long n) {
   return std::max<long long>(1, std::llround(static_cast<double>(n) * test_scale()));
 }
+
+inline bool scaled_down() { return test_scale() < 1; }
 
 // The default base is the one the implicit-point tests were written with; a test whose
 // cases were tuned with another base passes it (so its inputs stay what they were).
