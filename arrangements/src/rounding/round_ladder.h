@@ -13,23 +13,26 @@
 //      again, up to kPassesPerLevel passes (more while a pass makes no new point); stops
 //      early when a pass does not reduce the intersecting pairs or grows the mesh by more
 //      than a tenth.
-//   2. Rerouting (round_rerouting.h, reroute_in_cycles): vertices stay at their nearest
+//   2. Merged input at nearest (merged_input_at_nearest), only with options.input: input
+//      vertices within 4 ulps merged, the changed input given one pass at level 0 (models
+//      wider than 2^22 ulps, where level 0 left many conflicts).
+//   3. Rerouting (round_rerouting.h, reroute_in_cycles): vertices stay at their nearest
 //      doubles; slivers collapse and edges and faces reroute through vertices within an
 //      ulp; in cycles of arranging again and rounding while the conflicts are few. Its
 //      bound adds an ulp per round of rerouting.
-//   3. Merged input (round_merged_input.h), only with options.input: input vertices
+//   4. Merged input (round_merged_input.h), only with options.input: input vertices
 //      within 4^k ulps (k = 1..4) merged, the changed input arranged and rounded by a
 //      ladder of its own (settle_input, levels 0 and 1); the bound adds the input's move.
-//   4. Snapped planes (round_snapped_planes.h), only with options.input: near-coplanar
+//   5. Snapped planes (round_snapped_planes.h), only with options.input: near-coplanar
 //      layers, then corners near a touched face's plane, within 4^k ulps (k = 1..3) made
-//      coplanar exactly, settled as in 3.
-//   5. Level 1: the passes of 1 on the grid of 2^8 ulps.
-//   6. Per vertex (round_per_vertex.h, round_each_vertex): only the vertices of violating
+//      coplanar exactly, settled as in 4.
+//   6. Level 1: the passes of 1 on the grid of 2^8 ulps.
+//   7. Per vertex (round_per_vertex.h, round_each_vertex): only the vertices of violating
 //      pairs move, to coarser grids of their own, from the arrangement's triangles, then
 //      from the first rerouting's.
-//   7. Levels 2 to 4: each after merging the input within its spacing (`stable`
+//   8. Levels 2 to 4: each after merging the input within its spacing (`stable`
 //      distances only), the passes of 1 on grids of 2^(8j) ulps.
-//   8. Nudging (round_nudged.h, nudge_in_cycles), the last step: the corners of the
+//   9. Nudging (round_nudged.h, nudge_in_cycles), the last step: the corners of the
 //      conflicts that rerouting's best cycle left move by 1 to 1024 ulps one at a time
 //      where that leaves fewer; in cycles of arranging again and rerouting.
 // Every step counts its passes against options.max_passes (less the nudging reserve).
@@ -147,6 +150,7 @@ class Ladder {
     // by an ulp per round only; what that leaves, after the coarser levels, vertices on
     // grids of their own, coarser only where needed (round_per_vertex.h). Arranging the
     // result once more proves it.
+    if (auto done = merged_input_at_nearest()) return *done;
     find_exact_and_nearest();
     if (auto done = reroute_in_cycles()) return *done;
     // Merged input (round_merged_input.h): its vertices within 4, 16, 64, then 256 ulps of
@@ -334,20 +338,24 @@ class Ladder {
   // rounded safely by a ladder of its own (without the input steps or the coarser levels),
   // within kInputBudget passes (a change that does not settle soon is not the right one);
   // `note` records the change in the report. The bound adds the input's largest move.
+  // `passes`, `nudge_rounds` and `levels`: the changed input's ladder (by default
+  // kInputBudget, kNudgeRounds and kChangedInputLevels; level 0 alone for
+  // merged_input_at_nearest).
   template <class Soup, class Note>
-  Found settle_input(const Soup& soup, double input_move, Note note) {
+  Found settle_input(const Soup& soup, double input_move, Note note, int passes = kInputBudget,
+                     int nudge_rounds = kNudgeRounds, int levels = kChangedInputLevels) {
     if (input_move > move_limit_) return std::nullopt;
     RoundSafeOptions inner = options_;
     inner.input = nullptr;
-    // kInputBudget passes, then kNudgeRounds for nudging's cycles, within what is left.
-    inner.max_passes = std::min(kInputBudget + kNudgeRounds, budget_ - r_.passes);
-    const int reserve = std::max(0, inner.max_passes - kInputBudget);
+    // `passes`, then nudge_rounds for nudging's cycles, within what is left.
+    inner.max_passes = std::min(passes + nudge_rounds, budget_ - r_.passes);
+    if (inner.max_passes < 1) return std::nullopt;
+    const int reserve = std::max(0, inner.max_passes - passes);
     RoundReport done;
     try {
       const auto arranged = arrange(soup, arrange_options_);
       RoundedMesh rounded = Ladder<std::decay_t<decltype(arranged.mesh)>>(arranged.mesh, inner,
-                                                                          move_limit_ - input_move, reserve,
-                                                                          kChangedInputLevels)
+                                                                          move_limit_ - input_move, reserve, levels)
                                 .run(&done);
       done.passes += r_.passes;
       note(done);
@@ -395,6 +403,28 @@ class Ladder {
       if (auto done = settle_input(changed.soup, changed.max_move, note)) return done;
     }
     return std::nullopt;
+  }
+
+  // Merged input within 4 ulps, given one pass at level 0, before the rerouting cycles:
+  // input vertices that nearly coincide (the poles of turned copies of one mesh) make
+  // crossings that every rounding to doubles recreates and that rerouting fights for many
+  // passes (five turned spheres: 12 passes and 14.6 s, then merged input settled in
+  // 1.3 s). Where that one pass does not settle it, the ladder goes on unchanged (merged
+  // input at 4 ulps with its full ladder comes after rerouting); the pass is what it costs.
+  // Only where level 0 left many conflicts (more intersecting pairs than a quarter of the
+  // triangles; five turned spheres: 0.44 per triangle, against 0.07-0.2 where rerouting
+  // settles sooner, as on two turned angle blocks), and only on models wider than 2^22
+  // ulps: on one a few hundred ulps wide, 4 ulps is no longer a small change (it merges
+  // most of it) and the steps below do better.
+  Found merged_input_at_nearest() {
+    const double distance = std::ldexp(ulp_, 2);
+    if (options_.input == nullptr || r_.passes >= budget_ || distance > diagonal_ * 0x1p-20 ||
+        last_.intersecting_pairs <= mesh_.triangles.size() / 4)
+      return std::nullopt;
+    const MergedInput changed = merge_within(distance);
+    if (changed.merged == 0) return std::nullopt;
+    auto note = [&](RoundReport& d) { d.merged_input = changed.merged; };
+    return settle_input(changed.soup, changed.max_move, note, 1, 0, 1);
   }
 
   // Rounding per vertex from the arrangement's triangles, then from the first cycle's
