@@ -55,6 +55,7 @@
 #include "arrangements/arrange.h"
 #include "arrangements/as_input.h"
 #include "arrangements/round_mesh.h"
+#include "rounding/ladder_limits.h"
 #include "rounding/round_merged_input.h"
 #include "rounding/round_snapped_planes.h"
 #include "rounding/round_nudged.h"
@@ -68,40 +69,6 @@
 #include "support/vertex_coordinates.h"
 
 namespace arrangements::detail {
-
-// Rounding levels: level 0 rounds to the nearest double; level j >= 1 to the uniform grid of
-// spacing 2^(8j) units in the last place of the largest coordinate magnitude. A uniform grid,
-// unlike the doubles, is as coarse near zero as anywhere: features thinner than a cell (a
-// sliver, two surfaces 1e-33 apart near a zero coordinate) collapse instead of crossing
-// again after every pass.
-constexpr int kLevels = 5;
-constexpr int kPassesPerLevel = 4;
-constexpr int kRerouteCycles = 8;
-constexpr int kReroutePasses = 64;  // passes and rounds of round_safe when its rerouting stops
-constexpr int kInputBudget = 32;  // passes and rounds of round_safe on each changed input
-constexpr int kNudgeRounds = 64;  // kept for nudging (in cycles) on each changed input, beyond its kInputBudget
-constexpr int kNudgeCycles = 8;   // nudgings, each after the last one's mesh was arranged again
-constexpr int kChangedInputLevels = 2;  // a changed input's ladder: levels 0 and 1 (see Ladder)
-
-// Conflicts few enough to arrange again (rerouting's and nudging's cycles): on at most a
-// 20th of the triangles. Where they are more (layers that nearly coincide over whole
-// faces), arranging again makes as many new ones.
-inline bool few_conflicts(std::size_t violations, std::size_t triangles) { return violations <= triangles / 20; }
-
-// Conflicts nudging takes on: few, or up to kNudgeAnyMesh on a small mesh. Nudging weighs
-// 286 positions per corner; on more it would take minutes to leave as many.
-constexpr std::size_t kNudgeAnyMesh = 1024;
-inline bool nudgeable(std::size_t violations, std::size_t triangles) {
-  return violations <= kNudgeAnyMesh || few_conflicts(violations, triangles);
-}
-
-inline double level_spacing(double largest, int level) { return level == 0 ? 0 : grid_spacing(largest, 8 * level); }
-
-// True when arranging changed nothing: the mesh was an arrangement already.
-inline bool unchanged(const ArrangeStats& s) {
-  return s.intersecting_pairs == 0 && s.merged_vertices == 0 && s.removed_degenerate == 0 &&
-         s.removed_duplicate == 0 && s.out_vertices == s.in_vertices && s.out_triangles == s.in_triangles;
-}
 
 // One ladder of round_safe: its steps, each tried when the ones before it failed (the
 // smallest change first), on `mesh`; run() returns the first result that is an
@@ -144,43 +111,32 @@ class Ladder {
     report_ = report;
     if (auto done = passes_at_level(0)) return *done;
     std::size_t merged_before = 0, snapped_before = 0;  // vertices the last input change moved
-    // The last resorts make few or no new points: vertices stay at their nearest doubles
-    // while slivers collapse and edges and faces are rerouted through vertices within an
-    // ulp (round_rerouting.h), tried before the coarser levels because it moves the surface
-    // by an ulp per round only; what that leaves, after the coarser levels, vertices on
-    // grids of their own, coarser only where needed (round_per_vertex.h). Arranging the
-    // result once more proves it.
+    // The steps in the order of the list at the top of this file: the smallest change first.
     if (auto done = merged_input_at_nearest()) return *done;
+    // Rerouting moves the surface by an ulp per round only, so it comes before the coarser
+    // levels and the input changes; arranging its result once more proves it.
     find_exact_and_nearest();
     if (auto done = reroute_in_cycles()) return *done;
-    // Merged input (round_merged_input.h): its vertices within 4, 16, 64, then 256 ulps of
-    // each other merged (a move of a few ulps where copies of one mesh nearly coincide,
-    // before the coarser grids move every vertex by 2^8 ulps or more).
+    // Merged input within 4, 16, 64, then 256 ulps (before the grids' 2^8 ulps or more).
     if (auto done = input_step(1, 4, false, merged_before, &Ladder::merge_within, &MergedInput::merged,
                                &RoundReport::merged_input))
       return *done;
-    // Snapped planes (round_snapped_planes.h): layers within 4, 16, then 64 ulps of each
-    // other's planes made coplanar (exact rationals), for faces that nearly coincide
-    // without sharing vertices. Then contacts as well: corners within 4, 16, then 64 ulps
-    // of the plane of a triangle they touch moved onto it (an edge on a face that a turn
-    // left 1e-17 off it).
+    // Snapped planes: near-coplanar layers, then corners near a face they touch (an edge on
+    // a face that a turn left 1e-17 off it), within 4, 16, then 64 ulps.
     if (auto done = input_step(1, 3, false, snapped_before, &Ladder::snap_layers_within, &SnappedPlanes::moved,
                                &RoundReport::snapped_vertices))
       return *done;
     if (auto done = input_step(1, 3, false, snapped_before, &Ladder::snap_contacts_within,
                                &SnappedPlanes::moved, &RoundReport::snapped_vertices))
       return *done;
-    // Level 1 (a grid of 2^8 ulps), then rounding per vertex, which moves only the vertices
-    // of conflicting triangles (a far smaller change, where it settles, than the levels
-    // below).
+    // Level 1, then rounding per vertex (only the vertices of conflicts move: a far smaller
+    // change, where it settles, than the levels below).
     if (r_.passes < budget_ && levels_ > 1)
       if (auto done = passes_at_level(1)) return *done;
     if (auto done = round_each_vertex()) return *done;
-    // The coarser levels, each after merging the input within its spacing: copies of one
-    // mesh moved and turned by far more than ulps (1e-9 of the size, 1e-7 rad) coincide once
-    // every copied vertex merges with its original, a smaller change than moving every
-    // vertex to the level's grid. Merges that catch some copies only leave layers crossing
-    // as before, so these distances are `stable` ones.
+    // The coarser levels, each after merging the input within its spacing (copies moved by
+    // 1e-9 of the size and turned by 1e-7 rad coincide, a smaller change than the grid);
+    // merges that catch only some copies leave layers crossing, so only `stable` distances.
     for (int level = 2; level < levels_ && r_.passes < budget_; ++level) {
       if (auto done = input_step(4 * level - 3, 4 * level, true, merged_before, &Ladder::merge_within,
                                  &MergedInput::merged, &RoundReport::merged_input))
@@ -338,9 +294,7 @@ class Ladder {
   // rounded safely by a ladder of its own (without the input steps or the coarser levels),
   // within kInputBudget passes (a change that does not settle soon is not the right one);
   // `note` records the change in the report. The bound adds the input's largest move.
-  // `passes`, `nudge_rounds` and `levels`: the changed input's ladder (by default
-  // kInputBudget, kNudgeRounds and kChangedInputLevels; level 0 alone for
-  // merged_input_at_nearest).
+  // passes, nudge_rounds, levels: the changed input's ladder (merged_input_at_nearest's: 1, 0, 1).
   template <class Soup, class Note>
   Found settle_input(const Soup& soup, double input_move, Note note, int passes = kInputBudget,
                      int nudge_rounds = kNudgeRounds, int levels = kChangedInputLevels) {
@@ -405,17 +359,13 @@ class Ladder {
     return std::nullopt;
   }
 
-  // Merged input within 4 ulps, given one pass at level 0, before the rerouting cycles:
-  // input vertices that nearly coincide (the poles of turned copies of one mesh) make
-  // crossings that every rounding to doubles recreates and that rerouting fights for many
-  // passes (five turned spheres: 12 passes and 14.6 s, then merged input settled in
-  // 1.3 s). Where that one pass does not settle it, the ladder goes on unchanged (merged
-  // input at 4 ulps with its full ladder comes after rerouting); the pass is what it costs.
-  // Only where level 0 left many conflicts (more intersecting pairs than a quarter of the
-  // triangles; five turned spheres: 0.44 per triangle, against 0.07-0.2 where rerouting
-  // settles sooner, as on two turned angle blocks), and only on models wider than 2^22
-  // ulps: on one a few hundred ulps wide, 4 ulps is no longer a small change (it merges
-  // most of it) and the steps below do better.
+  // Merged input within 4 ulps, one pass at level 0, before rerouting: nearly coincident
+  // input vertices (poles of turned copies) make crossings every rounding recreates and
+  // rerouting fights for many passes (five turned spheres: 14.6 s, then this settled in
+  // 1.3 s). Failing, it costs the pass; the ladder goes on unchanged. Only where level 0
+  // left more intersecting pairs than a quarter of the triangles (those spheres: 0.44;
+  // turned angle blocks, which rerouting settles sooner: 0.07-0.2), on models wider than
+  // 2^22 ulps (on narrower ones 4 ulps merges most of the model).
   Found merged_input_at_nearest() {
     const double distance = std::ldexp(ulp_, 2);
     if (options_.input == nullptr || r_.passes >= budget_ || distance > diagonal_ * 0x1p-20 ||

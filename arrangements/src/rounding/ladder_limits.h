@@ -1,0 +1,46 @@
+// Ladder limits (arrangements::detail): the budgets, level spacings and conflict
+// thresholds the steps of the rounding ladder (round_ladder.h) share.
+#pragma once
+
+#include <cstddef>
+
+#include "arrangements/arrange_stats.h"
+#include "rounding/rounding_grid.h"
+
+namespace arrangements::detail {
+
+// Rounding levels: level 0 rounds to the nearest double; level j >= 1 to the uniform grid of
+// spacing 2^(8j) units in the last place of the largest coordinate magnitude. A uniform grid,
+// unlike the doubles, is as coarse near zero as anywhere: features thinner than a cell (a
+// sliver, two surfaces 1e-33 apart near a zero coordinate) collapse instead of crossing
+// again after every pass.
+constexpr int kLevels = 5;
+constexpr int kPassesPerLevel = 4;
+constexpr int kRerouteCycles = 8;
+constexpr int kReroutePasses = 64;  // passes and rounds of round_safe when its rerouting stops
+constexpr int kInputBudget = 32;  // passes and rounds of round_safe on each changed input
+constexpr int kNudgeRounds = 64;  // kept for nudging (in cycles) on each changed input, beyond its kInputBudget
+constexpr int kNudgeCycles = 8;   // nudgings, each after the last one's mesh was arranged again
+constexpr int kChangedInputLevels = 2;  // a changed input's ladder: levels 0 and 1 (see Ladder)
+
+// Conflicts few enough to arrange again (rerouting's and nudging's cycles): on at most a
+// 20th of the triangles. Where they are more (layers that nearly coincide over whole
+// faces), arranging again makes as many new ones.
+inline bool few_conflicts(std::size_t violations, std::size_t triangles) { return violations <= triangles / 20; }
+
+// Conflicts nudging takes on: few, or up to kNudgeAnyMesh on a small mesh. Nudging weighs
+// 286 positions per corner; on more it would take minutes to leave as many.
+constexpr std::size_t kNudgeAnyMesh = 1024;
+inline bool nudgeable(std::size_t violations, std::size_t triangles) {
+  return violations <= kNudgeAnyMesh || few_conflicts(violations, triangles);
+}
+
+inline double level_spacing(double largest, int level) { return level == 0 ? 0 : grid_spacing(largest, 8 * level); }
+
+// True when arranging changed nothing: the mesh was an arrangement already.
+inline bool unchanged(const ArrangeStats& s) {
+  return s.intersecting_pairs == 0 && s.merged_vertices == 0 && s.removed_degenerate == 0 &&
+         s.removed_duplicate == 0 && s.out_vertices == s.in_vertices && s.out_triangles == s.in_triangles;
+}
+
+}  // namespace arrangements::detail
