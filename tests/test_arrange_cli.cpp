@@ -240,7 +240,8 @@ TEST(ArrangeCli, StatsJsonKeysAreTheSharedList) {
 TEST(ArrangeCli, RoundSafeWritesAMeshThatIsAnArrangement) {
   tritri_test::TempDir dir;
   // Five copies: they settle in 2 passes (merged input at nearest), faster than three,
-  // which need merged input at 64 ulps after rerouting (about 20 passes).
+  // whose one pass there fails and which settle by merged input's full ladder after
+  // rerouting (about 20 passes).
   const arrangements::TriangleSoup soup =
       arrangements::rotated_copies(arrangements::uv_sphere({0.1, 0.2, 0.3}, 1.0, 12, 24), 5);
   const std::string in = (dir.path() / "copies.off").string();
