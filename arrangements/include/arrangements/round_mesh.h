@@ -43,8 +43,6 @@
 //   default: options.max_move_relative; or 16 ulps of L, for models a few ulps wide), and no result of a mesh with triangles is
 //   empty: a step whose result would is refused and the next one tried, so a grid or merge
 //   distance as wide as the model never collapses it.
-//   Last resorts; rounding per vertex and the rounds of rerouting do not arrange again, so
-//   they make no new points (rerouting's cycles do, few):
 //   Merged input at nearest, when level 0 fails leaving more intersecting pairs than a
 //   quarter of the triangles, options.input is given and the model is wider than 2^22 ulps
 //   of L (on a narrower one 4 ulps is no small change): input vertices
@@ -53,6 +51,8 @@
 //   mesh) make crossings that rerouting would fight for many passes (five turned 12 x 24
 //   spheres: 17.5 s before, 2.3 s with this step). When that pass does not settle, it costs
 //   the pass and nothing else changes.
+//   Last resorts; rounding per vertex and the rounds of rerouting do not arrange again, so
+//   they make no new points (rerouting's cycles do, few):
 //   Rerouting (src/rounding/round_rerouting.h), when level 0 fails: every vertex stays at its
 //   nearest double; slivers whose apex lies within an ulp of the opposite edge collapse onto it, and of
 //   each violating pair the vertex within an ulp of the other's edge or face is put on it

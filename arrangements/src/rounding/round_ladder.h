@@ -301,9 +301,9 @@ class Ladder {
     if (input_move > move_limit_) return std::nullopt;
     RoundSafeOptions inner = options_;
     inner.input = nullptr;
-    // `passes`, then nudge_rounds for nudging's cycles, within what is left.
+    // `passes`, then nudge_rounds for nudging's cycles, within what is left (callers check
+    // that some is: r_.passes < budget_).
     inner.max_passes = std::min(passes + nudge_rounds, budget_ - r_.passes);
-    if (inner.max_passes < 1) return std::nullopt;
     const int reserve = std::max(0, inner.max_passes - passes);
     RoundReport done;
     try {
