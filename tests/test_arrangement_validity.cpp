@@ -5,6 +5,8 @@
 // shared mesh up to a size limit, and an independent all-pairs classification of the
 // output (support/triangulation_checks.h) on small scenes; that check refuses bad meshes.
 // Both classifiers. Sizes scale with TRITRI_TEST_SCALE (default 1; sanitizer runs use 0.1).
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/intersections.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -117,6 +119,79 @@ TEST(Arrangement, CheckTouchingIsTheFullCheckRestrictedToTheMarks) {
     EXPECT_TRUE(check_arrangement_touching(m, std::vector<char>(m.triangles.size(), 0), 0).ok()) << trial;
   }
   EXPECT_THROW(check_arrangement_touching(RoundedMesh{}, std::vector<char>(1), 0), std::invalid_argument);
+}
+
+// Whether triangles i and j of m meet beyond what they share by index, by CGAL's exact
+// intersection (Epeck): independent of tritri and of stage 2's early-outs.
+bool meet_beyond_shared(const RoundedMesh& m, int i, int j) {
+  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  auto point = [&](int v) { return EK::Point_3(m.vertices[v][0], m.vertices[v][1], m.vertices[v][2]); };
+  auto triangle = [&](const Tri& f) { return EK::Triangle_3(point(f[0]), point(f[1]), point(f[2])); };
+  const Tri &a = m.triangles[i], &b = m.triangles[j];
+  std::vector<int> shared;
+  for (int v : a)
+    if (std::find(b.begin(), b.end(), v) != b.end()) shared.push_back(v);
+  if (shared.size() == 3) return true;
+  if (!CGAL::do_intersect(triangle(a), triangle(b))) return false;
+  const auto meet = CGAL::intersection(triangle(a), triangle(b));
+  if (shared.empty()) return true;
+  if (shared.size() == 1) {
+    const EK::Point_3* p = boost::get<EK::Point_3>(&*meet);
+    return p == nullptr || *p != point(shared[0]);
+  }
+  const EK::Segment_3* s = boost::get<EK::Segment_3>(&*meet);
+  const EK::Segment_3 edge(point(shared[0]), point(shared[1]));
+  return s == nullptr || (*s != edge && *s != edge.opposite());
+}
+
+// check_arrangement on rounded meshes (stage 2's early-outs, then tritri on what they keep)
+// and check_arrangement_touching list exactly the pairs CGAL's exact intersection finds
+// meeting beyond what they share: two height fields over offset grids crossing each other,
+// with flat (coplanar) runs of triangles, and a fan of 48 triangles (a hub) through them;
+// with and without a repeated triangle (which stage 2's preconditions exclude).
+TEST(Arrangement, CheckOfRoundedMeshesEqualsExactIntersectionsOfEveryPair) {
+  std::mt19937 rng(38);
+  for (int trial = 0; trial < 6; ++trial) {
+    RoundedMesh m;
+    auto field = [&](double offset, int n) {
+      const int first = static_cast<int>(m.vertices.size());
+      std::uniform_int_distribution<int> height(0, 2);
+      for (int y = 0; y <= n; ++y)
+        for (int x = 0; x <= n; ++x) m.vertices.push_back({x + offset, y + offset, height(rng) / 2.0});
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+          const int v = first + y * (n + 1) + x;
+          m.triangles.push_back({v, v + 1, v + n + 2});
+          m.triangles.push_back({v, v + n + 2, v + n + 1});
+        }
+    };
+    field(0, 5);
+    field(0.5, 4);
+    const int hub = static_cast<int>(m.vertices.size());
+    m.vertices.push_back({2.25, 2.75, 0.5});
+    for (int k = 0; k < 48; ++k) {
+      const double angle = 2 * M_PI * k / 48, tilt = 0.3 * std::sin(3 * angle) * (trial + 1) / 6;
+      m.vertices.push_back({2.25 + 2 * std::cos(angle), 2.75 + 2 * std::sin(angle), 0.5 + tilt});
+    }
+    for (int k = 0; k < 48; ++k) m.triangles.push_back({hub, hub + 1 + k, hub + 1 + (k + 1) % 48});
+    if (trial % 2 == 1) m.triangles.push_back(m.triangles[trial]);
+    m.source.assign(m.triangles.size(), 0);
+    m.label_set.assign(m.triangles.size(), 0);
+    m.label_sets = {{0}};
+    std::vector<std::pair<int, int>> expected;
+    const int nt = static_cast<int>(m.triangles.size());
+    for (int i = 0; i < nt; ++i)
+      for (int j = i + 1; j < nt; ++j)
+        if (meet_beyond_shared(m, i, j)) expected.emplace_back(i, j);
+    ASSERT_GT(expected.size(), 20u) << trial;
+    EXPECT_EQ(check_arrangement(m, 0).violating_pairs, expected) << trial;
+    std::vector<char> marked(m.triangles.size());
+    for (char& c : marked) c = rng() % 3 == 0;
+    std::vector<std::pair<int, int>> touching;
+    for (const auto& [i, j] : expected)
+      if (marked[i] || marked[j]) touching.emplace_back(i, j);
+    EXPECT_EQ(check_arrangement_touching(m, marked, 0).violating_pairs, touching) << trial;
+  }
 }
 
 // Every shared mesh up to a size limit, both classifiers.

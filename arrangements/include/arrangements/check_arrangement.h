@@ -15,7 +15,12 @@
 // self-intersection search plus one exact classification per overlapping pair (the
 // filters make most of them as cheap as double arithmetic); parallel (TBB). Memory: the
 // boxes plus batches of 2^20 pairs (classified as the search finds them), whatever the
-// number of overlapping pairs.
+// number of overlapping pairs. A RoundedMesh with distinct positions, no degenerate and no
+// repeated triangle (what round_safe makes) goes through the pipeline's stage 2 instead
+// (stages/2_candidate_pairs.h: its search, and its exact early-outs settle the pairs that
+// meet only in what they share, before any classification; pairs_checked counts the pairs
+// it visits); memory: the pairs it keeps. On EMBER 88566's rounded mesh (49k triangles)
+// that is 0.29 s instead of 0.88 s.
 #pragma once
 
 #include <cstddef>
@@ -43,7 +48,9 @@ ArrangementCheck check_arrangement(const RoundedMesh& mesh, std::size_t max_repo
 // The same check restricted to the pairs (and degenerate triangles) with a triangle marked
 // in `changed` (one mark per triangle, else std::invalid_argument): after a local change
 // to a mesh whose other pairs were checked before. Cost: one box search of the marked
-// triangles against all, plus one classification per overlapping pair found.
+// triangles against all, plus one classification per overlapping pair found that stage
+// 2's early-outs do not settle (where they apply, as above: 1.1 s instead of 5.5 s for 5,128
+// changed triangles of EMBER 79741's rounded mesh, 16.4M box pairs).
 ArrangementCheck check_arrangement_touching(const RoundedMesh& mesh, const std::vector<char>& changed,
                                             std::size_t max_reported = 10);
 

@@ -5,6 +5,7 @@
 #include <CGAL/box_intersection_d.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +19,10 @@
 #include <tritri/projection.h>
 
 #include "arrangements/memory_budget.h"
+#include "arrangements/thread_count.h"
 #include "models/exact_model.h"
+#include "stages/2_candidate_pairs.h"
+#include "stages/2_early_outs.h"
 #include "support/pair_fault.h"
 
 namespace arrangements {
@@ -45,13 +49,29 @@ std::string points_of(const tritri::Result& r) {
   return s;
 }
 
+// Whether stage 2's preconditions hold for double vertices V and triangles F, given no
+// degenerate triangle: distinct positions, no two triangles with the same three vertices.
+bool stage_two_applies(const std::vector<Vec3>& V, const std::vector<Tri>& F) {
+  std::vector<Vec3> positions(V);
+  std::sort(positions.begin(), positions.end());
+  if (std::adjacent_find(positions.begin(), positions.end()) != positions.end()) return false;
+  std::vector<Tri> sorted(F);
+  for (Tri& f : sorted) std::sort(f.begin(), f.end());
+  std::sort(sorted.begin(), sorted.end());
+  return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+}
+
 // The check on points P (kernel K) with conservative boxes [lo, hi] per vertex; with
-// `changed`, only the pairs with a triangle marked in it.
+// `changed`, only the pairs with a triangle marked in it. With `doubles` (P's coordinates,
+// when they are doubles) and no changed marks, the pairs that stage 2 (detect_pairs)
+// settles, which meet only in what they share, are not classified again, where its
+// preconditions hold (else every box pair is).
 template <class K, class Mesh>
 ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Point>& P,
                               const std::vector<std::array<double, 3>>& lo,
                               const std::vector<std::array<double, 3>>& hi, std::size_t max_reported,
-                              const std::vector<char>* changed = nullptr) {
+                              const std::vector<char>* changed = nullptr,
+                              const std::vector<Vec3>* doubles = nullptr) {
   ArrangementCheck out;
   const auto& F = mesh.triangles;
   std::vector<Box> boxes;
@@ -78,8 +98,21 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     if (!degenerate) degenerate = tritri::projection(K{}, P[f[0]], P[f[1]], P[f[2]]).second == 0;
     if (degenerate) report(out.degenerate_triangles, "triangle " + std::to_string(t) + " is degenerate");
   });
+  // Stage 2's early-outs, on doubles where its preconditions hold: the pairs they settle
+  // meet only in what they share. Checking every pair, stage 2's search applies them (and
+  // pairs the triangles around a hub by direction); checking the changed ones, each pair
+  // found by the box search below.
+  const bool early = doubles && out.degenerate_triangles == 0 && stage_two_applies(*doubles, F);
+  std::vector<DoubleModel::PlaneCache> planes;
+  if (early && changed) {
+    planes.resize(F.size());
+    tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
+      planes[t] = DoubleModel::plane_cache((*doubles)[F[t][0]], (*doubles)[F[t][1]], (*doubles)[F[t][2]]);
+    });
+  }
   auto classify_pair = [&](int i, int j) {
     detail::memory_checkpoint();
+    if (!planes.empty() && early_out<DoubleModel>(*doubles, F, planes, i, j).settled) return;
     const Tri& a = F[i];
     const Tri& b = F[j];
     tritri::Result r;
@@ -116,7 +149,13 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     pairs.emplace_back(std::min(a, b), std::max(a, b));
     if (pairs.size() == kBatch) flush();
   };
-  if (changed) {
+  if (early && !changed) {
+    const DetectedPairs detected = detect_pairs(*doubles, F, std::min(tbb::this_task_arena::max_concurrency(), kMaxThreads));
+    tbb::parallel_for(std::size_t{0}, detected.pairs.size(), [&](std::size_t k) {
+      classify_pair(detected.pairs[k].first, detected.pairs[k].second);
+    });
+    out.pairs_checked = detected.box_pairs;
+  } else if (changed) {
     // The changed boxes against all: a pair of two changed triangles is found twice, keep one.
     std::vector<Box> marked;
     for (const Box& b : boxes)
@@ -171,7 +210,8 @@ ArrangementCheck check_rounded(const RoundedMesh& mesh, std::size_t max_reported
   std::vector<tritri::ImplicitPoint> P(mesh.vertices.size());
   for (std::size_t v = 0; v < P.size(); ++v) P[v] = tritri::ImplicitPoint::explicit_point(mesh.vertices[v]);
   // Doubles are their own exact boxes.
-  return check_points<tritri::ImplicitKernel>(mesh, P, mesh.vertices, mesh.vertices, max_reported, changed);
+  return check_points<tritri::ImplicitKernel>(mesh, P, mesh.vertices, mesh.vertices, max_reported, changed,
+                                             &mesh.vertices);
 }
 
 }  // namespace

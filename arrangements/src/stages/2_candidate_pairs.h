@@ -22,7 +22,8 @@
 // except that the triangles around a vertex of high degree are paired by their directions
 // from it, so a fan is not paired all to all; a pair left out meets only in that vertex),
 // tritri::for_each_overlapping_pair on the certified intervals of rational points.
-// Early-outs, as each pair is found (in parallel):
+// Early-outs, as each pair is found (in parallel; stages/2_early_outs.h, which
+// check_arrangement shares):
 //   - neighbours (a shared vertex or edge by index) that provably meet only in what they
 //     share: tritri::meet_only_in_shared_by_sides, 1 to 4 plane signs;
 //   - other pairs where one triangle lies strictly on one side of the other's plane:
