@@ -4,7 +4,6 @@
 
 #include <cstddef>
 
-#include "arrangements/arrange_stats.h"
 #include "rounding/rounding_grid.h"
 
 namespace arrangements::detail {
@@ -36,11 +35,5 @@ inline bool nudgeable(std::size_t violations, std::size_t triangles) {
 }
 
 inline double level_spacing(double largest, int level) { return level == 0 ? 0 : grid_spacing(largest, 8 * level); }
-
-// True when arranging changed nothing: the mesh was an arrangement already.
-inline bool unchanged(const ArrangeStats& s) {
-  return s.intersecting_pairs == 0 && s.merged_vertices == 0 && s.removed_degenerate == 0 &&
-         s.removed_duplicate == 0 && s.out_vertices == s.in_vertices && s.out_triangles == s.in_triangles;
-}
 
 }  // namespace arrangements::detail

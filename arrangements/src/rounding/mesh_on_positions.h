@@ -25,4 +25,10 @@ MeshOnPositions mesh_on_positions(const std::vector<Vec3>& position, const std::
                                   const std::vector<std::int64_t>& source, const std::vector<int>& label_set,
                                   const std::vector<LabelSet>& label_sets);
 
+// A rounded mesh cleaned the same way (its own positions): what the exact check and
+// arrange_locally take.
+inline RoundedMesh mesh_on_positions(const RoundedMesh& m) {
+  return mesh_on_positions(m.vertices, m.triangles, m.source, m.label_set, m.label_sets).mesh;
+}
+
 }  // namespace arrangements

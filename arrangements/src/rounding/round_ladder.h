@@ -4,15 +4,15 @@
 // one; each changed input runs one of its own.
 //
 // The steps of Ladder::run, in order. Invariant of every step: a result is returned only
-// if it is an arrangement (arranging it again changes nothing, or the exact check finds
-// no violating pair and arranging it once more proves it: `settled`), its largest vertex
-// move is within the move limit (a 64th of the diagonal by default, capped by move_cap),
-// and it is not emptied (`finish`); otherwise the next step is tried, and after the last
-// one the ladder throws RoundingError (round_refusal.h).
-//   1. Level 0 (passes_at_level): round to the nearest doubles, arrange again, round
-//      again, up to kPassesPerLevel passes (more while a pass makes no new point); stops
-//      early when a pass does not reduce the intersecting pairs or grows the mesh by more
-//      than a tenth.
+// if it is an arrangement (the exact check of every pair finds no violating pair: a full
+// check, or tracker_'s incremental one after it), its largest vertex move is within the
+// move limit (a 64th of the diagonal by default, capped by move_cap), and it is not emptied
+// (`finish`); otherwise the next step is tried, and after the last one the ladder throws
+// RoundingError (round_refusal.h).
+//   1. Level 0 (passes_at_level): round to the nearest doubles, check, arrange the
+//      violating pairs' triangles again (arrange_locally.h), round again, up to
+//      kPassesPerLevel passes; stops early when a pass does not reduce the violating pairs
+//      or grows the mesh by more than a tenth.
 //   2. Merged input at nearest (merged_input_at_nearest), only with options.input: input
 //      vertices within 4 ulps merged, the changed input given one pass at level 0 (models
 //      wider than 2^22 ulps, where level 0 left many conflicts).
@@ -38,8 +38,6 @@
 // Every step counts its passes against options.max_passes (less the nudging reserve).
 #pragma once
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -53,7 +51,6 @@
 #include <tritri/implicit_point.h>
 
 #include "arrangements/arrange.h"
-#include "arrangements/as_input.h"
 #include "arrangements/round_mesh.h"
 #include "rounding/ladder_limits.h"
 #include "rounding/round_merged_input.h"
@@ -63,6 +60,8 @@
 #include "rounding/round_refusal.h"
 #include "rounding/round_rerouting.h"
 #include "rounding/round_to_grid.h"
+#include "rounding/arrange_locally.h"
+#include "rounding/violation_tracker.h"
 #include "support/bounding_box.h"
 #include "rounding/mesh_on_positions.h"
 #include "rounding/rounding_grid.h"
@@ -114,8 +113,8 @@ class Ladder {
     // The steps in the order of the list at the top of this file: the smallest change first.
     if (auto done = merged_input_at_nearest()) return *done;
     // Rerouting moves the surface by an ulp per round only, so it comes before the coarser
-    // levels and the input changes; arranging its result once more proves it.
-    find_exact_and_nearest();
+    // levels and the input changes.
+    exact_and_nearest(mesh_, exact_, nearest_positions_);
     if (auto done = reroute_in_cycles()) return *done;
     // Merged input within 4, 16, 64, then 256 ulps (before the grids' 2^8 ulps or more).
     if (auto done = input_step(1, 4, false, merged_before, &Ladder::merge_within, &MergedInput::merged,
@@ -160,13 +159,6 @@ class Ladder {
     return rounded;
   }
 
-  // A last resort's result, proven once more by arranging it.
-  Found settled(RoundedMesh rounded, double max_move, double grid) {
-    if (!unchanged(arrange(as_input(rounded), arrange_options_).stats))
-      throw RoundingError("round_safe: a last resort passed the check but arranging its result changed it");
-    return finish(std::move(rounded), max_move, grid);
-  }
-
   // The fewest conflicts any last resort left, here or on a changed input (for the refusal).
   void closer(std::size_t left) {
     if (left > 0 && (conflicts_left_ == 0 || left < conflicts_left_)) conflicts_left_ = left;
@@ -187,39 +179,26 @@ class Ladder {
     const std::size_t level_triangles = rounded.triangles.size();
     for (int pass = 1;; ++pass) {
       ++r_.passes;
-      ArrangeResult again = arrange(as_input(rounded), arrange_options_);
-      if (unchanged(again.stats)) return finish(std::move(rounded), level_move, h);
+      // Its vertices at distinct positions, none degenerate or repeated: then the exact
+      // check proves it an arrangement, or names the pairs to arrange again.
+      RoundedMesh clean = mesh_on_positions(rounded);
+      const std::vector<std::pair<int, int>> violating = tracker_.violations(clean);
+      if (violating.empty()) return finish(std::move(clean), level_move, h);
+      ArrangeStats again;
+      OutputMesh arranged = arrange_locally(clean, violating, arrange_options_, again);
       // A pass that does not reduce the intersections, or grows the mesh by more than a
       // tenth, means this grid keeps making features it cannot hold: go to the next level
-      // (before the passes grow the mesh without bound). A pass that finds none, only
-      // vertices to merge or triangles to drop (copies collapsed onto one grid), makes no
-      // new point and shrinks the mesh: the next one may settle, even after the level's 4.
-      const bool no_new_points = again.stats.intersecting_pairs == 0;
-      const bool worse = (pass > 1 && !no_new_points && again.stats.intersecting_pairs >= last_.intersecting_pairs) ||
-                         again.stats.out_triangles > level_triangles + level_triangles / 10;
-      last_ = again.stats;
+      // (before the passes grow the mesh without bound).
+      const bool worse = (pass > 1 && again.intersecting_pairs >= last_.intersecting_pairs) ||
+                         again.out_triangles > level_triangles + level_triangles / 10;
+      last_ = again;
       last_level_ = level;
-      if (worse || r_.passes >= budget_ || (pass >= kPassesPerLevel && !no_new_points)) break;
-      rounded = round_to_grid(again.mesh, h, snap, move, move_limit_ - level_move);
+      if (worse || r_.passes >= budget_ || pass >= kPassesPerLevel) break;
+      rounded = round_to_grid(arranged, h, snap, move, move_limit_ - level_move);
       level_move += move;
       if (level_move > move_limit_) break;
     }
     return std::nullopt;
-  }
-
-  // Every vertex of the exact arrangement, and its nearest double.
-  void find_exact_and_nearest() {
-    exact_.resize(mesh_.vertices.size());
-    nearest_positions_.resize(exact_.size());
-    tbb::parallel_for(std::size_t{0}, exact_.size(), [&](std::size_t v) {
-      if (is_double(mesh_.vertices[v])) {
-        nearest_positions_[v] = double_coordinates(mesh_.vertices[v]);
-        exact_[v] = to_exact(nearest_positions_[v]);
-      } else {
-        exact_[v] = exact_coordinates(mesh_.vertices[v]);
-        nearest_positions_[v] = tritri::to_double(exact_[v]);
-      }
-    });
   }
 
   // The step the cycles of rerouting and of nudging share: `m` arranged again (a pass; the
@@ -227,7 +206,9 @@ class Ladder {
   // an ulp snapped to a double vertex as the passes do; `move` receives the rounding's.
   RoundedMesh arrange_and_round(const RoundedMesh& m, double& move) {
     ++r_.passes;
-    return round_to_grid(arrange(as_input(m), arrange_options_).mesh, 0, ulp_, move);
+    const RoundedMesh clean = mesh_on_positions(m);
+    ArrangeStats again;
+    return round_to_grid(arrange_locally(clean, tracker_.violations(clean), arrange_options_, again), 0, ulp_, move);
   }
 
   // Rerouting of `m` (round_rerouting.h) within max_rounds, and its best mesh.
@@ -236,7 +217,8 @@ class Ladder {
     RoundedMesh mesh;
   };
   Rerouted reroute(const RoundedMesh& m, int max_rounds) {
-    Rerouting now = reroute_conflicts(m.vertices, m.triangles, m.source, m.label_set, m.label_sets, ulp_, max_rounds);
+    Rerouting now = reroute_conflicts(m.vertices, m.triangles, m.source, m.label_set, m.label_sets, ulp_, max_rounds,
+                                      tracker_);
     r_.passes += now.rounds;
     RoundedMesh best = mesh_on_positions(m.vertices, now.triangles, now.source, now.label_set, now.label_sets).mesh;
     return {std::move(now), std::move(best)};
@@ -273,7 +255,7 @@ class Ladder {
       if (cycle == 0) first_rerouting_ = std::move(now.rerouting);
       if (violations == 0) {
         r_.rerouted = rerouted;
-        if (auto done = settled(std::move(best), cycle_move, 0.0)) return done;
+        if (auto done = finish(std::move(best), cycle_move, 0.0)) return done;
         r_.rerouted = 0;
         return std::nullopt;
       }
@@ -391,7 +373,7 @@ class Ladder {
       if (!per) return std::nullopt;
       r_.passes += per->rounds;
       r_.coarsened = per->coarsened;
-      if (auto done = settled(per->mesh, per->max_move + extra_move, per->grid)) return done;
+      if (auto done = finish(per->mesh, per->max_move + extra_move, per->grid)) return done;
       r_.coarsened = 0;
       return std::nullopt;
     };
@@ -425,7 +407,7 @@ class Ladder {
       r_.rerouted = rerouted;
       r_.reroute_cycles = cycles;
       r_.nudged = nudged_vertices;
-      if (auto done = settled(std::move(rounded), nudge_move, 0.0)) return done;
+      if (auto done = finish(std::move(rounded), nudge_move, 0.0)) return done;
       r_ = before;
       return std::nullopt;
     };
@@ -476,6 +458,9 @@ class Ladder {
   ArrangeOptions arrange_options_;
   RoundReport r_;
   RoundReport* report_ = nullptr;
+  // Checks every mesh the passes and cycles make, incrementally: each changes the last one
+  // where it crossed itself only.
+  ViolationTracker tracker_;
   RoundedMesh nearest_;        // the arrangement rounded to nearest
   double nearest_move_ = 0;    // and that rounding's largest move
   double largest_ = 0;         // largest coordinate magnitude of nearest_

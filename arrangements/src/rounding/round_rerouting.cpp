@@ -14,7 +14,6 @@
 
 #include "arrangements/memory_budget.h"
 #include "rounding/mesh_on_positions.h"
-#include "rounding/violation_tracker.h"
 
 namespace arrangements {
 namespace {
@@ -221,12 +220,12 @@ std::size_t reroute_round(RoundedMesh& m, const std::vector<std::pair<int, int>>
 
 Rerouting reroute_conflicts(const std::vector<Vec3>& position, const std::vector<Tri>& triangles,
                             const std::vector<std::int64_t>& source, const std::vector<int>& label_set,
-                            const std::vector<LabelSet>& label_sets, double delta, int max_rounds) {
+                            const std::vector<LabelSet>& label_sets, double delta, int max_rounds,
+                            ViolationTracker& tracker) {
   Rerouting now{triangles, source, label_set, label_sets, 0, 0, 0};
   Rerouting best;
   best.violations = std::numeric_limits<std::size_t>::max();
   int rounds_since_best = 0;
-  ViolationTracker tracker;  // vertices never move: later rounds check only the new triangles
   for (int round = 1; round <= max_rounds; ++round) {
     detail::memory_checkpoint();
     MeshOnPositions c = mesh_on_positions(position, now.triangles, now.source, now.label_set, now.label_sets);

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "arrangements/output_mesh.h"
+#include "rounding/violation_tracker.h"
 
 namespace arrangements {
 
@@ -50,8 +51,11 @@ struct Rerouting {
 
 // position: every vertex of the arrangement rounded to the nearest double; triangles,
 // source, label_set, label_sets: the arrangement's (output_mesh.h); delta > 0.
+// tracker: checks each round's mesh (rounding/violation_tracker.h), incrementally from
+// whatever mesh it checked last (the caller's passes over the same vertices, say).
 Rerouting reroute_conflicts(const std::vector<Vec3>& position, const std::vector<Tri>& triangles,
                             const std::vector<std::int64_t>& source, const std::vector<int>& label_set,
-                            const std::vector<LabelSet>& label_sets, double delta, int max_rounds);
+                            const std::vector<LabelSet>& label_sets, double delta, int max_rounds,
+                            ViolationTracker& tracker);
 
 }  // namespace arrangements

@@ -27,6 +27,22 @@ namespace arrangements::detail {
 inline Vec3 double_coordinates(const tritri::ImplicitPoint& p) { return p.approx(); }
 inline Vec3 double_coordinates(const ExactVec3&) { return {}; }  // never asked
 
+// Every vertex of `mesh` (an arrangement), exactly and at its nearest double.
+template <class Mesh>
+void exact_and_nearest(const Mesh& mesh, std::vector<ExactVec3>& exact, std::vector<Vec3>& nearest) {
+  exact.resize(mesh.vertices.size());
+  nearest.resize(exact.size());
+  tbb::parallel_for(std::size_t{0}, exact.size(), [&](std::size_t v) {
+    if (is_double(mesh.vertices[v])) {
+      nearest[v] = double_coordinates(mesh.vertices[v]);
+      exact[v] = to_exact(nearest[v]);
+    } else {
+      exact[v] = exact_coordinates(mesh.vertices[v]);
+      nearest[v] = tritri::to_double(exact[v]);
+    }
+  });
+}
+
 // The mesh with every vertex rounded to the grid of spacing h, except that a vertex that
 // is not a double and lies within `snap` of a double vertex (exact squared distance) is
 // merged into the nearest one. Triangles that collapse to an edge or a point are dropped;

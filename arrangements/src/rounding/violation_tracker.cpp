@@ -30,16 +30,21 @@ std::vector<std::pair<int, int>> ViolationTracker::violations(const RoundedMesh&
     std::sort(corners[t].begin(), corners[t].end());
   }
   std::vector<std::pair<int, int>> violating;
-  if (first_) {
+  std::vector<char> changed;
+  std::size_t changed_count = nt;
+  if (!first_) {
+    changed.resize(nt);
+    changed_count = 0;
+    for (std::size_t t = 0; t < nt; ++t) changed_count += changed[t] = !previous_.contains(corners[t]);
+  }
+  // Where most triangles changed, the full check (stage 2's parallel search) costs less
+  // than the changed ones' box search against all.
+  if (changed_count > nt / 4) {
     violating = check_arrangement(mesh, 0).violating_pairs;
     first_ = false;
   } else {
-    std::vector<char> changed(nt);
     std::unordered_map<Corners, int, CornersHash> index;
-    for (std::size_t t = 0; t < nt; ++t) {
-      changed[t] = !previous_.contains(corners[t]);
-      index.emplace(corners[t], static_cast<int>(t));
-    }
+    for (std::size_t t = 0; t < nt; ++t) index.emplace(corners[t], static_cast<int>(t));
     violating = check_arrangement_touching(mesh, changed, 0).violating_pairs;
     for (const auto& [x, y] : previous_violating_) {
       const auto i = index.find(x), j = index.find(y);

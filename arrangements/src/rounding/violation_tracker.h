@@ -21,8 +21,9 @@ class ViolationTracker {
   // position are one vertex), so the first call checks every pair and later ones classify
   // only the pairs with a triangle whose corner positions were no triangle of the previous
   // call's mesh (check_arrangement_touching); the previous violations between triangles
-  // found again carry over. Exact; cost proportional to what changed, plus hashing the
-  // triangles.
+  // found again carry over (any mesh may follow any other: where more than a quarter of
+  // the triangles changed, every pair is checked again). Exact; cost proportional to what
+  // changed, plus hashing the triangles.
   std::vector<std::pair<int, int>> violations(const RoundedMesh& mesh);
 
  private:
