@@ -13,22 +13,23 @@
 //   and shared edges, none is degenerate, no two vertices coincide (decided exactly). In
 //   passes of rounding and arranging:
 //     1. round every vertex (to the level's grid, below);
-//     2. arrange the rounded mesh (the exact pipeline, double path): it finds every
-//        intersection and degeneracy that rounding made and resolves it (new LPI and TPI
-//        points, merged vertices, degenerate triangles removed);
-//     3. if step 2 changed nothing (no intersecting pair, nothing merged or removed, the
-//        same vertices and triangles), the rounded mesh is an arrangement: done. Else
-//        round step 2's result: its new points (made only because rounding moved
-//        vertices) are merged into the nearest vertex that is a double already when one
-//        lies within the level's snap distance (snap rounding's rule: new vertices at
-//        existing hot pixels), else rounded; triangles that collapse are dropped; go to 2.
+//     2. clean the rounded mesh (one vertex per position; triangles without area, or on
+//        the same three vertices as another, dropped, the latter's labels kept) and check
+//        it exactly (check_arrangement, incremental from the previous pass: only the pairs
+//        with a triangle the last mesh did not have);
+//     3. if no pair violates, it is an arrangement: done. Else arrange the triangles of
+//        the violating pairs again (the exact pipeline, double path; the others cannot be
+//        cut, so this is the arrangement of the whole mesh: new LPI and TPI points where
+//        rounding made crossings) and round the result: its new points (made only because
+//        rounding moved vertices) are merged into the nearest vertex that is a double
+//        already when one lies within the level's snap distance (snap rounding's rule: new
+//        vertices at existing hot pixels), else rounded; triangles that collapse are
+//        dropped; go to 2.
 //   Levels: level 0 rounds to the nearest double (snap distance: one ulp of the largest
 //   coordinate magnitude L). Some meshes hold features far thinner than an ulp (slivers,
 //   two surfaces 1e-33 apart near a zero coordinate); passes at level 0 then keep making
-//   new points at that scale. When a pass does not reduce the intersecting pairs, grows the
-//   mesh by more than a tenth, or 4 passes did not succeed (a pass that finds no
-//   intersecting pair, only vertices to merge or triangles to drop, makes no new point and
-//   shrinks the mesh: passes go on after it, past the 4th), rerouting is tried (below: it
+//   new points at that scale. When a pass does not reduce the violating pairs, grows the
+//   mesh by more than a tenth, or 4 passes did not succeed, rerouting is tried (below: it
 //   moves the surface by an ulp per round at most), then merging input vertices (below), then the
 //   next level starts again
 //   from the exact arrangement, on the uniform grid of spacing h = 2^(8j) ulps of L
@@ -153,8 +154,9 @@
 // `report`, when given, is filled before throwing (the passes and rounds spent, and
 // conflicts_left: how close the best attempt came).
 // Cost: round_nearest: one exact rounding per implicit vertex. round_safe: per pass one
-// rounding and one run of the pipeline on the rounded mesh (about the time of arranging a
-// clean mesh of that size); per round of a last resort one check_arrangement.
+// rounding, one check of the triangles that changed (the first pass: of all, about the time
+// of arranging a clean mesh of that size) and one run of the pipeline on the violating
+// pairs' triangles; per round of a last resort the same check.
 #pragma once
 
 #include <cstddef>
