@@ -4,6 +4,7 @@
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
 #include <CGAL/box_intersection_d.h>
 #include <tbb/enumerable_thread_specific.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -15,6 +16,7 @@
 #include <string>
 
 #include <tritri/classify.h>
+#include <tritri/double_kernel.h>
 #include <tritri/implicit_kernel.h>
 #include <tritri/projection.h>
 
@@ -74,16 +76,19 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
                               const std::vector<Vec3>* doubles = nullptr) {
   ArrangementCheck out;
   const auto& F = mesh.triangles;
-  std::vector<Box> boxes;
-  boxes.reserve(F.size());
-  for (std::size_t t = 0; t < F.size(); ++t) {
-    double l[3], h[3];
-    for (int k = 0; k < 3; ++k) {
-      l[k] = std::min({lo[F[t][0]][k], lo[F[t][1]][k], lo[F[t][2]][k]});
-      h[k] = std::max({hi[F[t][0]][k], hi[F[t][1]][k], hi[F[t][2]][k]});
+  auto triangle_boxes = [&] {
+    std::vector<Box> boxes;
+    boxes.reserve(F.size());
+    for (std::size_t t = 0; t < F.size(); ++t) {
+      double l[3], h[3];
+      for (int k = 0; k < 3; ++k) {
+        l[k] = std::min({lo[F[t][0]][k], lo[F[t][1]][k], lo[F[t][2]][k]});
+        h[k] = std::max({hi[F[t][0]][k], hi[F[t][1]][k], hi[F[t][2]][k]});
+      }
+      boxes.emplace_back(CGAL::Bbox_3(l[0], l[1], l[2], h[0], h[1], h[2]), static_cast<int>(t));
     }
-    boxes.emplace_back(CGAL::Bbox_3(l[0], l[1], l[2], h[0], h[1], h[2]), static_cast<int>(t));
-  }
+    return boxes;
+  };
   std::mutex m;
   auto report = [&](std::size_t& counter, std::string msg, int i = -1, int j = -1) {
     std::lock_guard<std::mutex> lock(m);
@@ -150,14 +155,18 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     if (pairs.size() == kBatch) flush();
   };
   if (early && !changed) {
-    const DetectedPairs detected = detect_pairs(*doubles, F, std::min(tbb::this_task_arena::max_concurrency(), kMaxThreads));
+    // The threads the caller allows (a global_control limit, as arrange --threads sets).
+    const int threads = std::min({tbb::this_task_arena::max_concurrency(), kMaxThreads,
+                                  static_cast<int>(tbb::global_control::active_value(
+                                      tbb::global_control::max_allowed_parallelism))});
+    const DetectedPairs detected = detect_pairs(*doubles, F, threads);
     tbb::parallel_for(std::size_t{0}, detected.pairs.size(), [&](std::size_t k) {
       classify_pair(detected.pairs[k].first, detected.pairs[k].second);
     });
     out.pairs_checked = detected.box_pairs;
   } else if (changed) {
     // The changed boxes against all: a pair of two changed triangles is found twice, keep one.
-    std::vector<Box> marked;
+    std::vector<Box> boxes = triangle_boxes(), marked;
     for (const Box& b : boxes)
       if ((*changed)[b.info()]) marked.push_back(b);
     CGAL::box_intersection_d<CGAL::Sequential_tag>(
@@ -168,6 +177,7 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
         },
         CGAL::Box_intersection_d::Box_traits_d<Box>(), 10, CGAL::Box_intersection_d::CLOSED);
   } else {
+    std::vector<Box> boxes = triangle_boxes();
     CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
         boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) { found(a.info(), b.info()); },
         CGAL::Box_intersection_d::Box_traits_d<Box>(), 10, CGAL::Box_intersection_d::CLOSED);
@@ -207,11 +217,9 @@ ArrangementCheck check_arrangement(const ExactOutputMesh& mesh, std::size_t max_
 namespace {
 
 ArrangementCheck check_rounded(const RoundedMesh& mesh, std::size_t max_reported, const std::vector<char>* changed) {
-  std::vector<tritri::ImplicitPoint> P(mesh.vertices.size());
-  for (std::size_t v = 0; v < P.size(); ++v) P[v] = tritri::ImplicitPoint::explicit_point(mesh.vertices[v]);
-  // Doubles are their own exact boxes.
-  return check_points<tritri::ImplicitKernel>(mesh, P, mesh.vertices, mesh.vertices, max_reported, changed,
-                                             &mesh.vertices);
+  // Doubles: tritri's double kernel (exact adaptive predicates), and their own exact boxes.
+  return check_points<tritri::DoubleKernel>(mesh, mesh.vertices, mesh.vertices, mesh.vertices, max_reported, changed,
+                                            &mesh.vertices);
 }
 
 }  // namespace

@@ -3,8 +3,9 @@
 
 #include <algorithm>
 #include <iterator>
-#include <map>
 #include <numeric>
+
+#include <tbb/parallel_for.h>
 
 #include <tritri/double_kernel.h>
 #include <tritri/projection.h>
@@ -34,26 +35,43 @@ MeshOnPositions mesh_on_positions(const std::vector<Vec3>& position, const std::
   for (std::size_t k = 0; k < nv; ++k)
     same[order[k]] = k > 0 && position[order[k]] == position[order[k - 1]] ? same[order[k - 1]] : order[k];
 
+  // Each triangle on the merged vertices; those with repeated or collinear corners (an
+  // exact test) dropped. Then triangles on the same three vertices: the first of each run
+  // keeps them (sorted corners as the key: a sort, no tree of the triangles).
+  const std::size_t nt = triangles.size();
+  std::vector<Tri> face(nt), key(nt);
+  std::vector<char> alive(nt);
+  tbb::parallel_for(std::size_t{0}, nt, [&](std::size_t t) {
+    Tri& f = face[t];
+    for (int k = 0; k < 3; ++k) f[k] = same[triangles[t][k]];
+    alive[t] = f[0] != f[1] && f[1] != f[2] && f[0] != f[2] &&
+               tritri::projection(tritri::DoubleKernel{}, position[f[0]], position[f[1]], position[f[2]]).second != 0;
+    key[t] = f;
+    std::sort(key[t].begin(), key[t].end());
+  });
+  std::vector<int> by_key;
+  by_key.reserve(nt);
+  for (std::size_t t = 0; t < nt; ++t)
+    if (alive[t]) by_key.push_back(static_cast<int>(t));
+  std::sort(by_key.begin(), by_key.end(), [&](int a, int b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
+  std::vector<int> first(nt, -1);  // the first triangle on the same three vertices
+  for (std::size_t k = 0; k < by_key.size(); ++k)
+    first[by_key[k]] = k > 0 && key[by_key[k]] == key[by_key[k - 1]] ? first[by_key[k - 1]] : by_key[k];
+
   MeshOnPositions c;
   c.mesh.label_sets = label_sets;
   LabelSetTable sets(c.mesh.label_sets);
-  std::vector<int> index(nv, -1);
-  std::map<Tri, int> kept;  // sorted corners -> triangle of the result
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    Tri f;
-    for (int k = 0; k < 3; ++k) f[k] = same[triangles[t][k]];
-    if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue;
-    if (tritri::projection(tritri::DoubleKernel{}, position[f[0]], position[f[1]], position[f[2]]).second == 0)
-      continue;  // collinear: no area
-    Tri key = f;
-    std::sort(key.begin(), key.end());
-    const auto [it, inserted] = kept.emplace(key, static_cast<int>(c.mesh.triangles.size()));
-    if (!inserted) {
+  std::vector<int> index(nv, -1), kept_as(nt, -1);
+  for (std::size_t t = 0; t < nt; ++t) {
+    if (!alive[t]) continue;
+    if (first[t] != static_cast<int>(t)) {
       // The same face twice: once, covered by the labels of both.
-      int& s = c.mesh.label_set[it->second];
+      int& s = c.mesh.label_set[kept_as[first[t]]];
       s = sets.index_of(label_union(c.mesh.label_sets[s], label_sets[label_set[t]]));
       continue;
     }
+    kept_as[t] = static_cast<int>(c.mesh.triangles.size());
+    Tri f = face[t];
     for (int& i : f) {
       if (index[i] < 0) {
         index[i] = static_cast<int>(c.mesh.vertices.size());

@@ -5,7 +5,6 @@
 
 #include <array>
 #include <cstddef>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -28,15 +27,13 @@ class ViolationTracker {
 
  private:
   using Corners = std::array<Vec3, 3>;  // sorted
-  struct CornersHash {
-    std::size_t operator()(const Corners& c) const;
-  };
-  struct PairHash {
-    std::size_t operator()(const std::pair<Corners, Corners>& p) const;
-  };
+  using Entry = std::pair<Corners, int>;  // a triangle's corners and its index
   bool first_ = true;
-  std::unordered_set<Corners, CornersHash> previous_;
-  std::unordered_set<std::pair<Corners, Corners>, PairHash> previous_violating_;
+  // The last mesh's triangles, sorted by corners only when the next call needs to look them
+  // up (a first check that finds nothing pays for no sort); flat vectors, no hashing.
+  std::vector<Entry> previous_;
+  bool previous_sorted_ = false;
+  std::vector<std::pair<Corners, Corners>> previous_violating_;
 };
 
 }  // namespace arrangements
