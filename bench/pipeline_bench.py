@@ -296,15 +296,9 @@ def substrings(value):
     return parts
 
 
-def parse_args(argv):
-    ap = Parser(prog="pipeline_bench.py", description=__doc__,
-                formatter_class=argparse.RawDescriptionHelpFormatter,
-                epilog="workloads: " + ", ".join(n for n, _ in WORKLOADS) + "\n\n"
-                       "An option that takes a value may be given once; numbers are plain decimal "
-                       "digits.\nExit status: 0 every workload ran with equal counts; 1 a workload "
-                       "missing, a failed run, a count\ndifference or a missing --reference-omc "
-                       "file; 2 a bad command line, --arrange/--baseline not\nexecutable, or "
-                       "--work/--json not writable.")
+def add_run_options(ap, default_timeout, work_help):
+    """The options of a benchmark over a fixed workload list (this one, round_bench.py):
+    --arrange, --baseline, --threads, --runs, --only, --meshes, --work, --timeout, --json."""
     ap.add_argument("--arrange", type=text, default=str(REPO / "build" / "bin" / "arrange"),
                     help="the arrange binary to time; make_test_meshes is taken from its folder "
                          "(default: %(default)s)")
@@ -318,24 +312,41 @@ def parse_args(argv):
     ap.add_argument("--meshes", type=path, default=SHARED / "meshes",
                     help="the shared meshes folder (default: %(default)s)")
     ap.add_argument("--work", type=path, default=Path(tempfile.gettempdir()) / "tritri-pipeline-bench",
-                    help="cache of the generated meshes and EMBER pairs, reused when present "
-                         "(default: %(default)s)")
-    ap.add_argument("--timeout", type=seconds(0, 10**7), default=1800,
-                    help="seconds per arrange process, 0 for none (default: 1800)")
+                    help=work_help + " (default: %(default)s)")
+    ap.add_argument("--timeout", type=seconds(0, 10**7), default=default_timeout,
+                    help=f"seconds per arrange process, 0 for none (default: {default_timeout})")
     ap.add_argument("--json", type=path, metavar="OUT.jsonl",
                     help="also write one JSON object per (workload, threads, binary) here")
+
+
+def check_run_options(ap, args, workloads):
+    """Usage errors for add_run_options' binaries; args.selected: the workloads --only keeps."""
+    for option, binary in (("--arrange", args.arrange), ("--baseline", args.baseline)):
+        if binary is not None and not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
+            ap.error(f"{option} {binary}: no such executable")
+    args.selected = [(n, k) for n, k in workloads if not args.only or any(s in n for s in args.only)]
+    if not args.selected:
+        ap.error(f"--only {','.join(args.only)}: no workload matches (workloads: "
+                 + ", ".join(n for n, _ in workloads) + ")")
+
+
+def parse_args(argv):
+    ap = Parser(prog="pipeline_bench.py", description=__doc__,
+                formatter_class=argparse.RawDescriptionHelpFormatter,
+                epilog="workloads: " + ", ".join(n for n, _ in WORKLOADS) + "\n\n"
+                       "An option that takes a value may be given once; numbers are plain decimal "
+                       "digits.\nExit status: 0 every workload ran with equal counts; 1 a workload "
+                       "missing, a failed run, a count\ndifference or a missing --reference-omc "
+                       "file; 2 a bad command line, --arrange/--baseline not\nexecutable, or "
+                       "--work/--json not writable.")
+    add_run_options(ap, default_timeout=1800,
+                    work_help="cache of the generated meshes and EMBER pairs, reused when present")
     ap.add_argument("--reference-omc", type=path, nargs="?", const=SHARED / "docs" / "PERFORMANCE.md",
                     metavar="PERFORMANCE.md",
                     help="add ours/OMC columns (1 and 2 threads) from this table (default file: "
                          f"{SHARED / 'docs' / 'PERFORMANCE.md'})")
     args = ap.parse_args(argv)
-    for option, binary in (("--arrange", args.arrange), ("--baseline", args.baseline)):
-        if binary is not None and not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
-            ap.error(f"{option} {binary}: no such executable")
-    args.selected = [(n, k) for n, k in WORKLOADS if not args.only or any(s in n for s in args.only)]
-    if not args.selected:
-        ap.error(f"--only {','.join(args.only)}: no workload matches (workloads: "
-                 + ", ".join(n for n, _ in WORKLOADS) + ")")
+    check_run_options(ap, args, WORKLOADS)
     return args
 
 
