@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 
+#include <tritri/box_pairs.h>
 #include <tritri/classify.h>
 #include <tritri/double_kernel.h>
 #include <tritri/implicit_kernel.h>
@@ -30,7 +31,7 @@
 namespace arrangements {
 namespace {
 
-using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int, CGAL::Box_intersection_d::ID_EXPLICIT>;
+using Box = tritri::detail::box_pairs::Box;  // with its triangle_boxes
 
 template <class Mesh>
 std::string describe(const Mesh& m, int i, int j, const std::string& what) {
@@ -76,19 +77,7 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
                               const std::vector<Vec3>* doubles = nullptr) {
   ArrangementCheck out;
   const auto& F = mesh.triangles;
-  auto triangle_boxes = [&] {
-    std::vector<Box> boxes;
-    boxes.reserve(F.size());
-    for (std::size_t t = 0; t < F.size(); ++t) {
-      double l[3], h[3];
-      for (int k = 0; k < 3; ++k) {
-        l[k] = std::min({lo[F[t][0]][k], lo[F[t][1]][k], lo[F[t][2]][k]});
-        h[k] = std::max({hi[F[t][0]][k], hi[F[t][1]][k], hi[F[t][2]][k]});
-      }
-      boxes.emplace_back(CGAL::Bbox_3(l[0], l[1], l[2], h[0], h[1], h[2]), static_cast<int>(t));
-    }
-    return boxes;
-  };
+  auto triangle_boxes = [&] { return tritri::detail::box_pairs::triangle_boxes(lo, hi, F); };
   std::mutex m;
   auto report = [&](std::size_t& counter, std::string msg, int i = -1, int j = -1) {
     std::lock_guard<std::mutex> lock(m);
