@@ -5,7 +5,8 @@
 // shared mesh up to a size limit, and an independent all-pairs classification of the
 // output (support/triangulation_checks.h) on small scenes; that check refuses bad meshes.
 // Both classifiers. Sizes scale with TRITRI_TEST_SCALE (default 1; sanitizer runs use 0.1).
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/intersections.h>
 #include <gtest/gtest.h>
 
@@ -122,9 +123,9 @@ TEST(Arrangement, CheckTouchingIsTheFullCheckRestrictedToTheMarks) {
 }
 
 // Whether triangles i and j of m meet beyond what they share by index, by CGAL's exact
-// intersection (Epeck): independent of tritri and of stage 2's early-outs.
+// intersection on rationals: independent of tritri and of stage 2's early-outs.
 bool meet_beyond_shared(const RoundedMesh& m, int i, int j) {
-  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  using EK = CGAL::Simple_cartesian<CGAL::Gmpq>;
   auto point = [&](int v) { return EK::Point_3(m.vertices[v][0], m.vertices[v][1], m.vertices[v][2]); };
   auto triangle = [&](const Tri& f) { return EK::Triangle_3(point(f[0]), point(f[1]), point(f[2])); };
   const Tri &a = m.triangles[i], &b = m.triangles[j];
@@ -146,7 +147,7 @@ bool meet_beyond_shared(const RoundedMesh& m, int i, int j) {
 
 // check_arrangement on rounded meshes (stage 2's early-outs, then tritri on what they keep)
 // and check_arrangement_touching list exactly the pairs CGAL's exact intersection finds
-// meeting beyond what they share: two height fields over offset grids crossing each other,
+// meeting beyond what they share (rationals): two height fields over offset grids crossing each other,
 // with flat (coplanar) runs of triangles, and a fan of 48 triangles (a hub) through them;
 // with and without a repeated triangle (which stage 2's preconditions exclude).
 TEST(Arrangement, CheckOfRoundedMeshesEqualsExactIntersectionsOfEveryPair) {
