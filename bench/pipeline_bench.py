@@ -320,7 +320,8 @@ def add_run_options(ap, default_timeout, work_help):
 
 
 def check_run_options(ap, args, workloads):
-    """Usage errors for add_run_options' binaries; args.selected: the workloads --only keeps."""
+    """Usage errors for add_run_options' binaries; args.selected: the workloads --only keeps;
+    args.binaries: [(label, binary)], "new" then "base" when --baseline is given."""
     for option, binary in (("--arrange", args.arrange), ("--baseline", args.baseline)):
         if binary is not None and not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
             ap.error(f"{option} {binary}: no such executable")
@@ -328,6 +329,7 @@ def check_run_options(ap, args, workloads):
     if not args.selected:
         ap.error(f"--only {','.join(args.only)}: no workload matches (workloads: "
                  + ", ".join(n for n, _ in workloads) + ")")
+    args.binaries = [("new", args.arrange)] + ([("base", args.baseline)] if args.baseline else [])
 
 
 def parse_args(argv):
@@ -352,7 +354,7 @@ def parse_args(argv):
 
 def main(argv=None):
     args = parse_args(argv)
-    binaries = [("new", args.arrange)] + ([("base", args.baseline)] if args.baseline else [])
+    binaries = args.binaries
     problems, notes, omc = [], [], None
     if args.reference_omc is not None:
         try:

@@ -250,7 +250,7 @@ def parse_args(argv):
 
 def main(argv=None):
     args = parse_args(argv)
-    binaries = [("new", args.arrange)] + ([("base", args.baseline)] if args.baseline else [])
+    binaries = args.binaries
     try:
         args.work.mkdir(parents=True, exist_ok=True)
         if args.json and not (args.json.parent.is_dir() and os.access(args.json.parent, os.W_OK)):

@@ -131,7 +131,7 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
   // all of them can be far larger than the mesh (52M pairs for 42K triangles).
   constexpr std::size_t kBatch = std::size_t{1} << 20;
   std::vector<std::pair<int, int>> pairs;
-  pairs.reserve(std::min(kBatch, 16 * F.size() + 16));
+  if (!(early && !changed)) pairs.reserve(std::min(kBatch, 16 * F.size() + 16));  // the box searches' batches
   auto flush = [&] {
     tbb::parallel_for(std::size_t{0}, pairs.size(),
                       [&](std::size_t k) { classify_pair(pairs[k].first, pairs[k].second); });
