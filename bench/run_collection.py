@@ -437,14 +437,12 @@ def main(argv=None):
                 print(m.id)
             return 0
         recorded = read_recorded(args.out)
-        todo = [m for m in models
-                if m.id not in recorded or recorded[m.id] in args.retry]
+        todo = [m for m in models if m.id not in recorded or recorded[m.id] in args.retry]
         if todo and not os.access(args.tool, os.X_OK):
             raise InputError(f"{args.tool}: no such executable (build it: cmake --build build "
                              "--target tritri-compare)")
         for cases in sorted({m.ember_cases for m in todo if m.ember_cases}):
-            build_ember_pairs(cases, args.pairs_dir,
-                              [m.files[0].name for m in todo if m.ember_cases == cases])
+            build_ember_pairs(cases, args.pairs_dir, [m.files[0].name for m in todo if m.ember_cases == cases])
     except (InputError, OSError, ValueError) as e:
         print(f"run_collection: {e}", file=sys.stderr)
         return 2
