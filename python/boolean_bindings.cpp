@@ -49,7 +49,7 @@ nb::dict boolean(const std::vector<Coords>& V, const std::vector<Indices>& F, co
     out = arrangements::detail::boolean_eigen(Ve, Fe, tree, options, "tritri.boolean", exact_output ? &exact : nullptr);
   }
   return double_path_dict(std::move(out), exact_output ? &exact : nullptr, threads, round_safe, round_max_move,
-                          nullptr);
+                          nullptr, true);
 }
 
 // The exact path of tritri.boolean: each operand's V as hexadecimal "n/d" strings.
@@ -70,7 +70,7 @@ nb::dict boolean_exact(const std::vector<std::vector<std::string>>& V, const std
     out = arrangements::detail::boolean_eigen_exact(
         Ve, Fe, arrangements::operation_tree(boolean_op, static_cast<int>(V.size())), options, "tritri.boolean");
   }
-  return exact_path_dict(std::move(out), threads, round_safe, round_max_move);
+  return exact_path_dict(std::move(out), threads, round_safe, round_max_move, true);
 }
 
 // tritri.csg: a .csg file (load_csg_file) evaluated by boolean(); the double path when its
@@ -96,8 +96,8 @@ nb::dict csg(const std::string& path, const std::string& classifier, int threads
   }
   if (plain)
     return double_path_dict(std::move(*plain), exact_output ? &exact : nullptr, threads, round_safe, round_max_move,
-                            nullptr);
-  return exact_path_dict(std::move(*rational), threads, round_safe, round_max_move);
+                            nullptr, true);
+  return exact_path_dict(std::move(*rational), threads, round_safe, round_max_move, true);
 }
 
 }  // namespace

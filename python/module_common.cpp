@@ -102,7 +102,7 @@ nb::dict arrangement_dict(std::vector<double>&& rounded, std::vector<std::uint8_
 // label_sets, and stats with the round_* keys. RoundingError becomes RuntimeError.
 template <class Out>
 nb::dict safely_rounded_dict(Out&& out, int threads, double max_move_relative,
-                             const arrangements::TriangleSoup* input = nullptr) {
+                             const arrangements::TriangleSoup* input, bool keep_closed) {
   const auto nf = static_cast<std::size_t>(out.F.rows());
   arrangements::RoundedMesh rounded;
   arrangements::RoundReport report;
@@ -124,6 +124,7 @@ nb::dict safely_rounded_dict(Out&& out, int threads, double max_move_relative,
     options.threads = threads;
     options.max_move_relative = max_move_relative;
     options.input = input;
+    options.keep_closed = keep_closed;
     if constexpr (std::is_same_v<std::decay_t<Out>, arrangements::EigenArrangement>) {
       arrangements::OutputMesh mesh;
       mesh.vertices = std::move(out.vertices);
@@ -205,8 +206,9 @@ arrangements::ArrangeOptions arrange_options(const std::string& classifier, int 
 }
 
 nb::dict double_path_dict(arrangements::EigenArrangement&& out, std::vector<ExactVec3>* exact, int threads,
-                          bool round_safe, double round_max_move, const arrangements::TriangleSoup* input) {
-  if (round_safe) return safely_rounded_dict(std::move(out), threads, round_max_move, input);
+                          bool round_safe, double round_max_move, const arrangements::TriangleSoup* input,
+                          bool keep_closed) {
+  if (round_safe) return safely_rounded_dict(std::move(out), threads, round_max_move, input, keep_closed);
   const auto nv = static_cast<std::size_t>(out.V.rows());
   std::vector<double> v(3 * nv);
   std::vector<std::uint8_t> flags(nv);
@@ -220,8 +222,8 @@ nb::dict double_path_dict(arrangements::EigenArrangement&& out, std::vector<Exac
 }
 
 nb::dict exact_path_dict(arrangements::ExactEigenArrangement&& out, int threads, bool round_safe,
-                         double round_max_move) {
-  if (round_safe) return safely_rounded_dict(std::move(out), threads, round_max_move);
+                         double round_max_move, bool keep_closed) {
+  if (round_safe) return safely_rounded_dict(std::move(out), threads, round_max_move, nullptr, keep_closed);
   std::vector<ExactVec3> exact;
   std::vector<double> rounded;
   std::vector<std::uint8_t> flags;

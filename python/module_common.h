@@ -76,15 +76,17 @@ arrangements::ArrangeOptions arrange_options(const std::string& classifier, int 
                                              const std::string& where = "tritri.arrange");
 
 // The dict of a double-path result `out` (arrange, boolean, csg): rounded by round_safe
-// when round_safe (input: round_safe's last resort, may be null), else V, V_is_exact and,
-// when exact is given (the exact output vertices), V_exact.
+// when round_safe (input: round_safe's last resort, may be null; keep_closed: a Boolean's,
+// RoundSafeOptions::keep_closed), else V, V_is_exact and, when exact is given (the exact
+// output vertices), V_exact.
 nb::dict double_path_dict(arrangements::EigenArrangement&& out, std::vector<ExactVec3>* exact, int threads,
-                          bool round_safe, double round_max_move, const arrangements::TriangleSoup* input);
+                          bool round_safe, double round_max_move, const arrangements::TriangleSoup* input,
+                          bool keep_closed = false);
 
 // The dict of an exact-path result `out` (arrange, boolean, csg): rounded by round_safe
 // when round_safe, else V (V_exact rounded to the nearest doubles), V_is_exact, V_exact.
 nb::dict exact_path_dict(arrangements::ExactEigenArrangement&& out, int threads, bool round_safe,
-                         double round_max_move);
+                         double round_max_move, bool keep_closed = false);
 
 // Adds boolean, boolean_exact and csg to the module (boolean_bindings.cpp).
 void bind_booleans(nb::module_& m);

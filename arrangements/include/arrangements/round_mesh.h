@@ -14,7 +14,8 @@
 //   passes of rounding and arranging:
 //     1. round every vertex (to the level's grid, below);
 //     2. clean the rounded mesh (one vertex per position; triangles without area, or on
-//        the same three vertices as another, dropped, the latter's labels kept) and check
+//        the same three vertices as another, dropped, the latter's labels kept; with
+//        options.keep_closed, opposite ones on the same three vertices cancel) and check
 //        it exactly (check_arrangement, incremental from the previous pass: only the pairs
 //        with a triangle the last mesh did not have);
 //     3. if no pair violates, it is an arrangement: done. Else arrange the triangles of
@@ -176,6 +177,10 @@ struct RoundSafeOptions {
   // larger moves, a fifth of its size or more: a caller who accepts that says so here.
   double max_move_relative = 1.0 / 64;
   int threads = 0;  // worker threads of the pipeline runs: 0 for all cores
+  // The mesh is a closed solid (a Boolean's output, every edge used as often in one
+  // direction as in the other): a step's result that is not is refused like one beyond the
+  // move limit (rerouting can open a solid), and the next step tried.
+  bool keep_closed = false;
   // The input that `mesh` is the arrangement of (double path only; optional): enables the
   // input steps (merging input vertices, snapping nearly coplanar faces).
   const TriangleSoup* input = nullptr;

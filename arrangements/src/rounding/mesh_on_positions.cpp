@@ -25,7 +25,7 @@ LabelSet label_union(const LabelSet& a, const LabelSet& b) {
 
 MeshOnPositions mesh_on_positions(const std::vector<Vec3>& position, const std::vector<Tri>& triangles,
                                   const std::vector<std::int64_t>& source, const std::vector<int>& label_set,
-                                  const std::vector<LabelSet>& label_sets) {
+                                  const std::vector<LabelSet>& label_sets, bool closed) {
   // One vertex per position: the first of each run of equal positions.
   const std::size_t nv = position.size();
   std::vector<int> order(nv), same(nv);
@@ -57,19 +57,32 @@ MeshOnPositions mesh_on_positions(const std::vector<Vec3>& position, const std::
   std::vector<int> first(nt, -1);  // the first triangle on the same three vertices
   for (std::size_t k = 0; k < by_key.size(); ++k)
     first[by_key[k]] = k > 0 && key[by_key[k]] == key[by_key[k - 1]] ? first[by_key[k - 1]] : by_key[k];
+  if (closed) {
+    // Per run of one key: the orientations summed (+1 as the first triangle, -1 opposite);
+    // a run that sums to 0 goes, one that sums below 0 is kept by its first opposite one.
+    std::vector<int> net(nt, 0);
+    auto same_turn = [&](int t, int u) {
+      int k = 0;
+      while (face[u][k] != face[t][0]) ++k;
+      return face[u][(k + 1) % 3] == face[t][1];
+    };
+    for (int t : by_key) net[first[t]] += same_turn(t, first[t]) ? 1 : -1;
+    std::vector<int> keeper(nt, -1);
+    for (int t : by_key) {
+      const int f = first[t];
+      if (net[f] == 0) alive[t] = 0;
+      else if (keeper[f] < 0 && (net[f] > 0) == same_turn(t, f)) keeper[f] = t;
+    }
+    for (int t : by_key)
+      if (alive[t]) first[t] = keeper[first[t]];
+  }
 
   MeshOnPositions c;
   c.mesh.label_sets = label_sets;
   LabelSetTable sets(c.mesh.label_sets);
   std::vector<int> index(nv, -1), kept_as(nt, -1);
   for (std::size_t t = 0; t < nt; ++t) {
-    if (!alive[t]) continue;
-    if (first[t] != static_cast<int>(t)) {
-      // The same face twice: once, covered by the labels of both.
-      int& s = c.mesh.label_set[kept_as[first[t]]];
-      s = sets.index_of(label_union(c.mesh.label_sets[s], label_sets[label_set[t]]));
-      continue;
-    }
+    if (!alive[t] || first[t] != static_cast<int>(t)) continue;
     kept_as[t] = static_cast<int>(c.mesh.triangles.size());
     Tri f = face[t];
     for (int& i : f) {
@@ -83,6 +96,12 @@ MeshOnPositions mesh_on_positions(const std::vector<Vec3>& position, const std::
     c.mesh.source.push_back(source[t]);
     c.mesh.label_set.push_back(label_set[t]);
   }
+  // The same face twice: once, covered by the labels of both (the kept one may come later).
+  for (std::size_t t = 0; t < nt; ++t)
+    if (alive[t] && first[t] != static_cast<int>(t)) {
+      int& s = c.mesh.label_set[kept_as[first[t]]];
+      s = sets.index_of(label_union(c.mesh.label_sets[s], label_sets[label_set[t]]));
+    }
   c.vertex_of.resize(nv);
   for (std::size_t v = 0; v < nv; ++v) c.vertex_of[v] = index[same[v]];
   return c;

@@ -21,14 +21,18 @@ struct MeshOnPositions {
 // test) are dropped; triangles on the same three vertices become one, the first, with the
 // union of their label sets (appended to label_sets when new). Vertices are numbered in
 // first-use order. O(n log n) in the vertices and triangles.
+// closed: the triangles bound solids (a Boolean's output), and triangles on the same three
+// vertices count with their orientation: opposite ones cancel (a slab rounded to zero
+// thickness vanishes instead of leaving one face, which would open the surface); what is
+// left of them, if anything, is one triangle facing the majority's way.
 MeshOnPositions mesh_on_positions(const std::vector<Vec3>& position, const std::vector<Tri>& triangles,
                                   const std::vector<std::int64_t>& source, const std::vector<int>& label_set,
-                                  const std::vector<LabelSet>& label_sets);
+                                  const std::vector<LabelSet>& label_sets, bool closed = false);
 
 // A rounded mesh cleaned the same way (its own positions): what the exact check and
 // arrange_locally take.
-inline RoundedMesh mesh_on_positions(const RoundedMesh& m) {
-  return mesh_on_positions(m.vertices, m.triangles, m.source, m.label_set, m.label_sets).mesh;
+inline RoundedMesh mesh_on_positions(const RoundedMesh& m, bool closed = false) {
+  return mesh_on_positions(m.vertices, m.triangles, m.source, m.label_set, m.label_sets, closed).mesh;
 }
 
 }  // namespace arrangements

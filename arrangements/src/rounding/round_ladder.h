@@ -6,9 +6,9 @@
 // The steps of Ladder::run, in order. Invariant of every step: a result is returned only
 // if it is an arrangement (the exact check of every pair finds no violating pair: a full
 // check, or tracker_'s incremental one after it), its largest vertex move is within the
-// move limit (a 64th of the diagonal by default, capped by move_cap), and it is not emptied
-// (`finish`); otherwise the next step is tried, and after the last one the ladder throws
-// RoundingError (round_refusal.h).
+// move limit (a 64th of the diagonal by default, capped by move_cap), it is not emptied,
+// and it is closed where options.keep_closed asks (`finish`); otherwise the next step is
+// tried, and after the last one the ladder throws RoundingError (round_refusal.h).
 //   1. Level 0 (passes_at_level): round to the nearest doubles, check, arrange the
 //      violating pairs' triangles again (arrange_locally.h), round again, up to
 //      kPassesPerLevel passes; stops early when a pass does not reduce the violating pairs
@@ -52,6 +52,7 @@
 
 #include "arrangements/arrange.h"
 #include "arrangements/round_mesh.h"
+#include "booleans/unbalanced_edges.h"
 #include "rounding/ladder_limits.h"
 #include "rounding/round_merged_input.h"
 #include "rounding/round_snapped_planes.h"
@@ -152,6 +153,7 @@ class Ladder {
   // The result, with the report filled, when within the move limit and not emptied.
   Found finish(RoundedMesh rounded, double max_move, double grid) {
     if (max_move > move_limit_ || (rounded.triangles.empty() && !mesh_.triangles.empty())) return std::nullopt;
+    if (options_.keep_closed && unbalanced_edges(rounded) != 0) return std::nullopt;
     r_.grid = grid;
     r_.max_move = max_move;
     r_.max_move_relative = diagonal_ > 0 ? r_.max_move / diagonal_ : 0.0;
@@ -181,7 +183,7 @@ class Ladder {
       ++r_.passes;
       // Its vertices at distinct positions, none degenerate or repeated: then the exact
       // check proves it an arrangement, or names the pairs to arrange again.
-      RoundedMesh clean = mesh_on_positions(rounded);
+      RoundedMesh clean = mesh_on_positions(rounded, options_.keep_closed);
       const std::vector<std::pair<int, int>> violating = tracker_.violations(clean);
       if (violating.empty()) return finish(std::move(clean), level_move, h);
       ArrangeStats again;
@@ -206,7 +208,7 @@ class Ladder {
   // an ulp snapped to a double vertex as the passes do; `move` receives the rounding's.
   RoundedMesh arrange_and_round(const RoundedMesh& m, double& move) {
     ++r_.passes;
-    const RoundedMesh clean = mesh_on_positions(m);
+    const RoundedMesh clean = mesh_on_positions(m, options_.keep_closed);
     ArrangeStats again;
     return round_to_grid(arrange_locally(clean, tracker_.violations(clean), arrange_options_, again), 0, ulp_, move);
   }
@@ -218,9 +220,11 @@ class Ladder {
   };
   Rerouted reroute(const RoundedMesh& m, int max_rounds) {
     Rerouting now = reroute_conflicts(m.vertices, m.triangles, m.source, m.label_set, m.label_sets, ulp_, max_rounds,
-                                      tracker_);
+                                      tracker_, options_.keep_closed);
     r_.passes += now.rounds;
-    RoundedMesh best = mesh_on_positions(m.vertices, now.triangles, now.source, now.label_set, now.label_sets).mesh;
+    RoundedMesh best =
+        mesh_on_positions(m.vertices, now.triangles, now.source, now.label_set, now.label_sets, options_.keep_closed)
+            .mesh;
     return {std::move(now), std::move(best)};
   }
 

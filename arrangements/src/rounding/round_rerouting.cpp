@@ -29,6 +29,12 @@ QVec cross(const QVec& u, const QVec& v) {
   return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
 }
 
+// Whether p, q and r lie on one line (exact).
+bool collinear(const Vec3& p, const Vec3& q, const Vec3& r) {
+  const QVec c = cross(minus(q, p), minus(r, p));
+  return c[0] == 0 && c[1] == 0 && c[2] == 0;
+}
+
 // The double filter of the tests below: false only when p is clearly farther than
 // 2 delta from the line through a and b (the exact test decides everything else).
 bool maybe_near_line(const Vec3& p, const Vec3& a, const Vec3& b, double delta) {
@@ -159,47 +165,74 @@ std::size_t reroute_round(RoundedMesh& m, const std::vector<std::pair<int, int>>
     if (alive[t])
       for (int k = 0; k < 3; ++k) on_edge[edge_key(m.triangles[t][k], m.triangles[t][(k + 1) % 3])].push_back(t);
 
-  // Longer edges first, so that a vertex pending on a piece of an edge finds that piece.
-  std::vector<std::pair<double, std::uint64_t>> order;
-  for (const auto& [key, vertices] : on_edge_pending) {
-    const Vec3 &a = P[key >> 32], &b = P[key & 0xffffffffu];
-    order.emplace_back(-((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2])),
-                       key);
-  }
-  std::sort(order.begin(), order.end());
-  for (const auto& [minus_length2, key] : order) {
-    const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
-    std::vector<int> on = on_edge_pending[key];
-    std::sort(on.begin(), on.end());
-    on.erase(std::unique(on.begin(), on.end()), on.end());
-    // In order from a to b: by the exact projection on b - a.
-    const QVec e = minus(P[b], P[a]);
-    std::vector<std::pair<Q, int>> along;
-    for (int v : on) along.emplace_back(dot(minus(P[v], P[a]), e), v);
-    std::sort(along.begin(), along.end());
-    const std::vector<int> triangles = on_edge[key];  // a copy: the pieces are added to on_edge
-    for (int t : triangles) {
-      if (!alive[t]) continue;
-      const Tri f = m.triangles[t];
-      alive[t] = 0;
-      if (std::any_of(on.begin(), on.end(), [&](int v) { return v == f[0] || v == f[1] || v == f[2]; }))
-        continue;  // a sliver over this edge: flat now
-      int k = 0;
-      while (edge_key(f[k], f[(k + 1) % 3]) != key) ++k;
-      std::vector<int> chain{f[k]};
-      if (f[k] == a)
-        for (const auto& [_, v] : along) chain.push_back(v);
-      else
-        for (auto it = along.rbegin(); it != along.rend(); ++it) chain.push_back(it->second);
-      chain.push_back(f[(k + 1) % 3]);
-      const int apex = f[(k + 2) % 3];
-      for (std::size_t c = 0; c + 1 < chain.size(); ++c) {
-        add(chain[c], chain[c + 1], apex, t);
-        const int piece = static_cast<int>(m.triangles.size()) - 1;
-        const Tri& g = m.triangles[piece];
-        for (int j = 0; j < 3; ++j) on_edge[edge_key(g[j], g[(j + 1) % 3])].push_back(piece);
+  // Every triangle on an edge with vertices pending on it split through them, in order along
+  // it (a sliver over the edge, whose apex is one of them, leaves only degenerate pieces,
+  // dropped: every triangle on the edge is split the same way, so a closed surface stays
+  // closed). Longer edges first, so that a vertex pending on a piece of an edge finds that piece.
+  auto split_edges = [&](std::unordered_map<std::uint64_t, std::vector<int>>& pending) {
+    std::vector<std::pair<double, std::uint64_t>> order;
+    for (const auto& [key, vertices] : pending) {
+      const Vec3 &a = P[key >> 32], &b = P[key & 0xffffffffu];
+      order.emplace_back(
+          -((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2])), key);
+    }
+    std::sort(order.begin(), order.end());
+    for (const auto& [minus_length2, key] : order) {
+      const int a = static_cast<int>(key >> 32);
+      std::vector<int> on = pending[key];
+      std::sort(on.begin(), on.end());
+      on.erase(std::unique(on.begin(), on.end()), on.end());
+      // In order from a to b: by the exact projection on b - a.
+      const QVec e = minus(P[static_cast<int>(key & 0xffffffffu)], P[a]);
+      std::vector<std::pair<Q, int>> along;
+      for (int v : on) along.emplace_back(dot(minus(P[v], P[a]), e), v);
+      std::sort(along.begin(), along.end());
+      const std::vector<int> triangles = on_edge[key];  // a copy: the pieces are added to on_edge
+      for (int t : triangles) {
+        if (!alive[t]) continue;
+        const Tri f = m.triangles[t];
+        alive[t] = 0;
+        int k = 0;
+        while (edge_key(f[k], f[(k + 1) % 3]) != key) ++k;
+        std::vector<int> chain{f[k]};
+        if (f[k] == a)
+          for (const auto& [_, v] : along) chain.push_back(v);
+        else
+          for (auto it = along.rbegin(); it != along.rend(); ++it) chain.push_back(it->second);
+        chain.push_back(f[(k + 1) % 3]);
+        const int apex = f[(k + 2) % 3];
+        for (std::size_t c = 0; c + 1 < chain.size(); ++c) {
+          if (chain[c] == apex || chain[c + 1] == apex) continue;
+          add(chain[c], chain[c + 1], apex, t);
+          const int piece = static_cast<int>(m.triangles.size()) - 1;
+          const Tri& g = m.triangles[piece];
+          for (int j = 0; j < 3; ++j) on_edge[edge_key(g[j], g[(j + 1) % 3])].push_back(piece);
+        }
       }
     }
+  };
+  // Pieces whose corners are collinear (exactly: a second vertex pending on a sliver's
+  // edge makes one) are slivers of width 0: their middle vertex goes on their long edge
+  // the same way, until none is left (cleaning would drop them and open the surface).
+  for (std::size_t first_new = nt, round = 0; round < 8; ++round) {
+    split_edges(on_edge_pending);
+    on_edge_pending.clear();
+    const std::size_t end = m.triangles.size();
+    for (std::size_t t = first_new; t < end; ++t) {
+      if (!alive[t]) continue;
+      const Tri& f = m.triangles[t];
+      if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2] || !collinear(P[f[0]], P[f[1]], P[f[2]])) continue;
+      // The middle corner: the one opposite the longest side.
+      Q longest = -1;
+      int middle = 0;
+      for (int k = 0; k < 3; ++k) {
+        const QVec d = minus(P[f[(k + 1) % 3]], P[f[(k + 2) % 3]]);
+        if (const Q l = dot(d, d); l > longest) longest = l, middle = k;
+      }
+      on_edge_pending[edge_key(f[(middle + 1) % 3], f[(middle + 2) % 3])].push_back(f[middle]);
+    }
+    if (on_edge_pending.empty()) break;
+    first_new = end;
   }
 
   std::size_t kept = 0;
@@ -221,14 +254,14 @@ std::size_t reroute_round(RoundedMesh& m, const std::vector<std::pair<int, int>>
 Rerouting reroute_conflicts(const std::vector<Vec3>& position, const std::vector<Tri>& triangles,
                             const std::vector<std::int64_t>& source, const std::vector<int>& label_set,
                             const std::vector<LabelSet>& label_sets, double delta, int max_rounds,
-                            ViolationTracker& tracker) {
+                            ViolationTracker& tracker, bool closed) {
   Rerouting now{triangles, source, label_set, label_sets, 0, 0, 0};
   Rerouting best;
   best.violations = std::numeric_limits<std::size_t>::max();
   int rounds_since_best = 0;
   for (int round = 1; round <= max_rounds; ++round) {
     detail::memory_checkpoint();
-    MeshOnPositions c = mesh_on_positions(position, now.triangles, now.source, now.label_set, now.label_sets);
+    MeshOnPositions c = mesh_on_positions(position, now.triangles, now.source, now.label_set, now.label_sets, closed);
     const std::vector<std::pair<int, int>> violating = tracker.violations(c.mesh);
     best.rounds = round;
     if (violating.size() < best.violations) {
