@@ -37,7 +37,8 @@ def boolean(meshes, op="union", *, exact=None, rounding="nearest", round_max_mov
     exact, rounding, round_max_move, classifier, threads: as arrange's exact_output,
     rounding, round_max_move, classifier and threads (exact=None: V_exact when some
     operand is exact input; when some value is not exactly a float64, the exact pipeline
-    runs).
+    runs). rounding="safe" keeps the result closed (a step of safe rounding whose result
+    would be open is not taken; docs/BOOLEANS.md).
     Returns the dict of arrange for the boundary of the result: V, V_is_exact, (V_exact),
     F, source (the row of the concatenation of the operands' F, operand 0's rows first),
     label_set / label_sets (the operands covering each triangle), stats. An empty result
@@ -45,7 +46,7 @@ def boolean(meshes, op="union", *, exact=None, rounding="nearest", round_max_mov
     Raises ValueError for an op not in BOOLEAN_OPS, no operand, an entry that is not a
     (V, F) pair, refused arrays (as arrange, the message naming meshes[i]), and an operand
     that is not closed ("... operand 1 is not closed: ..."); RuntimeError when
-    rounding="safe" does not converge; ThreadError (a RuntimeError) when the system refuses
+    rounding="safe" does not converge to a closed result; ThreadError (a RuntimeError) when the system refuses
     the worker threads; ArgumentTypeError for arguments of the wrong type.
     """
     f = "boolean"

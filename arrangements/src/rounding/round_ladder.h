@@ -150,7 +150,8 @@ class Ladder {
  private:
   using Found = std::optional<RoundedMesh>;
 
-  // The result, with the report filled, when within the move limit and not emptied.
+  // The result, with the report filled, when within the move limit, not emptied and, where
+  // options.keep_closed asks, closed.
   Found finish(RoundedMesh rounded, double max_move, double grid) {
     if (max_move > move_limit_ || (rounded.triangles.empty() && !mesh_.triangles.empty())) return std::nullopt;
     if (options_.keep_closed && unbalanced_edges(rounded) != 0) return std::nullopt;
