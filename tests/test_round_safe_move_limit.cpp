@@ -5,9 +5,9 @@
 // wide down to about a hundred (the sweep's `scaled` copies, bench/round_safe_sweep.py,
 // are the shared meshes so treated). Every result, settled within whichever limit, is
 // checked exactly: an arrangement (check_arrangement and arranging it again finds
-// nothing), its reported move within the limit. The narrowest model settles within the
-// default limit too: 16 ulps (it was refused until rerouting kept every edge it splits
-// consistent).
+// nothing), its reported move within the limit. The narrowest model is refused within
+// the default limit, after few passes, and settles when the caller accepts the whole
+// diagonal.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -74,11 +74,8 @@ TEST(RoundSafeMoveLimit, TinyModelsFarFromTheOriginStayWithinTheLimitTheCallerSe
       }
     }
   }
-  // The narrowest (2^-28: about 120 ulps wide) needed a move of a sixth of it, beyond the
-  // default limit (16 ulps), until rerouting split every triangle on an edge it puts a
-  // vertex on, flat pieces included: it settles within 16 ulps now (test_round_safe's
-  // NoResultMovesAVertexBeyondAFractionOfTheModel still has models refused by default).
-  EXPECT_EQ(refused_by_default, 0);
+  // The narrowest (2^-28: about 150 ulps wide) needs a move of about a sixth of it.
+  EXPECT_GE(refused_by_default, 1);
 }
 
 TEST(RoundSafeMoveLimit, LimitsThatAreNotFiniteNumbersAboveZeroAreRefused) {

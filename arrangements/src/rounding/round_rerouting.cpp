@@ -112,9 +112,9 @@ Reroute pair_reroute(const std::vector<Vec3>& P, const std::vector<Tri>& F, int 
 }
 
 // One round of rerouting on mesh m (its triangles change); returns the vertices put on an
-// edge or a face.
+// edge or a face. closed: m bounds solids and must stay closed (reroute_conflicts).
 std::size_t reroute_round(RoundedMesh& m, const std::vector<std::pair<int, int>>& pairs, bool every_sliver,
-                          double delta) {
+                          double delta, bool closed) {
   const std::vector<Vec3>& P = m.vertices;
   const Q delta2 = Q(delta) * Q(delta);
   const std::size_t nt = m.triangles.size();
@@ -166,9 +166,10 @@ std::size_t reroute_round(RoundedMesh& m, const std::vector<std::pair<int, int>>
       for (int k = 0; k < 3; ++k) on_edge[edge_key(m.triangles[t][k], m.triangles[t][(k + 1) % 3])].push_back(t);
 
   // Every triangle on an edge with vertices pending on it split through them, in order along
-  // it (a sliver over the edge, whose apex is one of them, leaves only degenerate pieces,
-  // dropped: every triangle on the edge is split the same way, so a closed surface stays
-  // closed). Longer edges first, so that a vertex pending on a piece of an edge finds that piece.
+  // it (closed: a sliver over the edge, whose apex is one of them, too, leaving one piece
+  // per other vertex pending and degenerate ones, dropped; so every triangle on the edge is
+  // split the same way and a closed surface stays closed). Longer edges first, so that a
+  // vertex pending on a piece of an edge finds that piece.
   auto split_edges = [&](std::unordered_map<std::uint64_t, std::vector<int>>& pending) {
     std::vector<std::pair<double, std::uint64_t>> order;
     for (const auto& [key, vertices] : pending) {
@@ -192,6 +193,10 @@ std::size_t reroute_round(RoundedMesh& m, const std::vector<std::pair<int, int>>
         if (!alive[t]) continue;
         const Tri f = m.triangles[t];
         alive[t] = 0;
+        // Not closed: a sliver over the edge just goes (other vertices pending on its edge
+        // then leave T-junctions, which the next round's check finds).
+        if (!closed && std::any_of(on.begin(), on.end(), [&](int v) { return v == f[0] || v == f[1] || v == f[2]; }))
+          continue;
         int k = 0;
         while (edge_key(f[k], f[(k + 1) % 3]) != key) ++k;
         std::vector<int> chain{f[k]};
@@ -211,12 +216,13 @@ std::size_t reroute_round(RoundedMesh& m, const std::vector<std::pair<int, int>>
       }
     }
   };
-  // Pieces whose corners are collinear (exactly: a second vertex pending on a sliver's
-  // edge makes one) are slivers of width 0: their middle vertex goes on their long edge
-  // the same way, until none is left (cleaning would drop them and open the surface).
+  // Closed: pieces whose corners are collinear (exactly: a second vertex pending on a
+  // sliver's edge makes one) are slivers of width 0: their middle vertex goes on their long
+  // edge the same way, until none is left (cleaning would drop them and open the surface).
   for (std::size_t first_new = nt, round = 0; round < 8; ++round) {
     split_edges(on_edge_pending);
     on_edge_pending.clear();
+    if (!closed) break;
     const std::size_t end = m.triangles.size();
     for (std::size_t t = first_new; t < end; ++t) {
       if (!alive[t]) continue;
@@ -274,7 +280,7 @@ Rerouting reroute_conflicts(const std::vector<Vec3>& position, const std::vector
     } else if (++rounds_since_best == kRoundsWithoutProgress) {
       break;
     }
-    now.rerouted += reroute_round(c.mesh, violating, round == 1, delta);
+    now.rerouted += reroute_round(c.mesh, violating, round == 1, delta, closed);
     // Back to the input's vertices (one per position: the first).
     std::vector<int> input_of(c.mesh.vertices.size(), -1);
     for (std::size_t v = c.vertex_of.size(); v-- > 0;)

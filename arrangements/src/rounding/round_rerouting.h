@@ -53,9 +53,11 @@ struct Rerouting {
 // source, label_set, label_sets: the arrangement's (output_mesh.h); delta > 0.
 // tracker: checks each round's mesh (rounding/violation_tracker.h), incrementally from
 // whatever mesh it checked last (the caller's passes over the same vertices, say).
-// closed: the triangles bound solids; each round's cleaning keeps them closed
-// (mesh_on_positions). Every triangle on an edge that gets a vertex is split through it, so
-// rerouting itself keeps a closed surface closed.
+// closed: the triangles bound solids and stay closed: every triangle on an edge that gets
+// vertices is split through them (a sliver over the edge too, its flat pieces collapsed in
+// turn), and each round's cleaning cancels opposite faces (mesh_on_positions). Not closed,
+// a sliver over such an edge is dropped whole (what that leaves, the next round's check
+// finds), which the sweep measures as the better trade for arrangements.
 Rerouting reroute_conflicts(const std::vector<Vec3>& position, const std::vector<Tri>& triangles,
                             const std::vector<std::int64_t>& source, const std::vector<int>& label_set,
                             const std::vector<LabelSet>& label_sets, double delta, int max_rounds,
