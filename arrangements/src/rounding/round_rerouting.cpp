@@ -12,6 +12,9 @@
 #include <optional>
 #include <unordered_map>
 
+#include <tritri/double_kernel.h>
+#include <tritri/projection.h>
+
 #include "arrangements/memory_budget.h"
 #include "rounding/mesh_on_positions.h"
 
@@ -27,12 +30,6 @@ QVec minus(const Vec3& p, const Vec3& q) { return {Q(p[0]) - Q(q[0]), Q(p[1]) - 
 Q dot(const QVec& u, const QVec& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
 QVec cross(const QVec& u, const QVec& v) {
   return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-}
-
-// Whether p, q and r lie on one line (exact).
-bool collinear(const Vec3& p, const Vec3& q, const Vec3& r) {
-  const QVec c = cross(minus(q, p), minus(r, p));
-  return c[0] == 0 && c[1] == 0 && c[2] == 0;
 }
 
 // The double filter of the tests below: false only when p is clearly farther than
@@ -227,7 +224,8 @@ std::size_t reroute_round(RoundedMesh& m, const std::vector<std::pair<int, int>>
     for (std::size_t t = first_new; t < end; ++t) {
       if (!alive[t]) continue;
       const Tri& f = m.triangles[t];
-      if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2] || !collinear(P[f[0]], P[f[1]], P[f[2]])) continue;
+      const bool flat = tritri::projection(tritri::DoubleKernel{}, P[f[0]], P[f[1]], P[f[2]]).second == 0;
+      if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2] || !flat) continue;
       // The middle corner: the one opposite the longest side.
       Q longest = -1;
       int middle = 0;
