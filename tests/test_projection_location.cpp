@@ -99,6 +99,27 @@ TEST(Projection, DominantPlaneDropsTheLargestNormalComponent) {
   EXPECT_EQ(call.planes, (std::vector<Plane>{Plane::ZX, Plane::XY, Plane::YZ}));
 }
 
+// Implicit points give the hint from their cached rounded coordinates (before, the generic
+// overload found no approximation for them and answered XY for every triangle, so every
+// projection of a vertical triangle of implicit points began with an exact zero).
+TEST(Projection, DominantPlaneOfImplicitPoints) {
+  using tritri::ImplicitPoint;
+  const P p{0, 0, -1}, q{0, 0, 1};  // the z axis, cut by planes z = h
+  auto on_axis = [&](double h, double x, double y) {
+    const ImplicitPoint lpi = ImplicitPoint::lpi(P{p[0] + x, p[1] + y, p[2]}, P{q[0] + x, q[1] + y, q[2]},
+                                                 P{0, 0, h}, P{1, 0, h}, P{0, 1, h});
+    EXPECT_FALSE(lpi.is_explicit());
+    return lpi;
+  };
+  // In x = 0 (normal along x): YZ. In y = 0: ZX. In z = 0.5: XY.
+  EXPECT_EQ(tritri::dominant_plane(on_axis(0.25, 0, 0), on_axis(0.5, 0, 1), on_axis(0.75, 0, 3)), Plane::YZ);
+  EXPECT_EQ(tritri::dominant_plane(on_axis(0.25, 0, 0), on_axis(0.5, 1, 0), on_axis(0.75, 3, 0)), Plane::ZX);
+  EXPECT_EQ(tritri::dominant_plane(on_axis(0.5, 0, 0), on_axis(0.5, 1, 0), on_axis(0.5, 0, 1)), Plane::XY);
+  const ImplicitPoint e = ImplicitPoint::explicit_point(0, 0, 0);
+  EXPECT_EQ(tritri::dominant_plane(e, ImplicitPoint::explicit_point(0, 1, 0), ImplicitPoint::explicit_point(0, 0, 1)),
+            Plane::YZ);
+}
+
 TEST(Location, TwoBytesAndDefaultOutside) {
   EXPECT_EQ(sizeof(Location), 2u);
   EXPECT_EQ(Location{}.kind, Location::Outside);

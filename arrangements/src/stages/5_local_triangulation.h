@@ -10,6 +10,7 @@
 // for every triangle: deterministic.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <deque>
@@ -50,13 +51,26 @@ class LocalTriangulation {
   // zero that orient() answers without arithmetic (the exact stage of implicit points
   // is the costliest predicate there is, and points on one edge are the common case).
   std::vector<std::uint8_t> on_edge;
+  // The constraint lines each vertex lies on by construction (ids the caller gives, one per
+  // line; sorted): three vertices on one line are collinear, an exact zero that orient()
+  // answers without arithmetic as for on_edge. Coplanar overlaps make these common: a
+  // partner's edge crosses t as a chain of constraints, and fans put many lines through
+  // one point (100 coplanar wedges: 151 s, most of it in exact zeros, before this).
+  std::vector<std::vector<int>> lines;
 
   LocalTriangulation(tritri::Plane plane, int sign, const typename M::Vertex& origin)
       : plane_(plane), sign_(sign), origin_(origin) {}
 
   int orient(int a, int b, int c) const {
-    if (on_edge[a] & on_edge[b] & on_edge[c]) return 0;
+    if ((on_edge[a] & on_edge[b] & on_edge[c]) || on_common_line(a, b, c)) return 0;
     return sign_ * tritri::to_int(M::orient2d_local(off[a], off[b], off[c], plane_));
+  }
+
+  // Records that vertex v lies on line `line` (exactly: by construction).
+  void add_line(int v, int line) {
+    std::vector<int>& l = lines[v];
+    const auto it = std::lower_bound(l.begin(), l.end(), line);
+    if (it == l.end() || *it != line) l.insert(it, line);
   }
 
   int add_vertex(const typename M::Point& p) {
@@ -65,6 +79,7 @@ class LocalTriangulation {
     vtri.push_back(-1);
     deg.push_back(0);
     on_edge.push_back(0);
+    lines.emplace_back();
     return static_cast<int>(pts.size()) - 1;
   }
 
@@ -95,30 +110,53 @@ class LocalTriangulation {
     split_edge(t, k, p);
   }
 
-  // Inserts the constraint segment (a, b) between two vertices. `crossing(cid, other)`
-  // returns a new vertex at the crossing of constraint cid with constraint `other`.
+  // Inserts the constraint segment (a, b) between two vertices, on line `line` (an id of
+  // `lines`; -1: none). `crossing(cid, other)` returns a new vertex at the crossing of
+  // constraint cid with constraint `other`.
   template <class Crossing>
-  void insert_constraint(int a, int b, int cid, Crossing&& crossing) {
+  void insert_constraint(int a, int b, int cid, Crossing&& crossing, int line = -1) {
     detail::memory_checkpoint();
-    int cur = a;
+    ++constraint_;
+    int cur = a, prev = -1;
     std::vector<std::array<int, 2>> crossed;
     while (cur != b) {
       int target = -1;
       crossed.clear();
-      // The triangle around cur whose wedge contains the direction to b.
+      // The triangle around cur whose wedge contains the direction to b. An edge to b, or
+      // (past a) to a vertex on the line other than the one we came from, is the next step
+      // with no predicate: the line meets cur's ring in at most one vertex on each side,
+      // and an edge from cur cannot pass beyond b.
       bool done = false;
       const std::vector<int> ring = around(cur);
       for (int t : ring) {
         const LocalTriangle& T = tris[t];
         const int i = index_of(T, cur);
         const int u = T.v[next3(i)], w = T.v[prev3(i)];
-        if (u == b || w == b) {
-          mark(t, u == b ? prev3(i) : next3(i), cid);
-          target = b;
+        const int next = u == b || w == b ? b
+                         : prev < 0 || line < 0 ? -1
+                         : u != prev && has_line(u, line) ? u
+                         : w != prev && has_line(w, line) ? w
+                                                          : -1;
+        if (next >= 0) {
+          mark(t, u == next ? prev3(i) : next3(i), cid);
+          target = next;
           done = true;
           break;
         }
-        const int ou = orient(a, b, u), ow = orient(a, b, w);
+      }
+      // Else the wedge by orientation (each vertex's side of (a, b) is computed once per
+      // constraint: neighbouring triangles of the ring share a vertex).
+      if (side_of_.size() < pts.size()) side_of_.resize(pts.size(), {0, 0});
+      auto side = [&](int v) {
+        if (side_of_[v].first != constraint_) side_of_[v] = {constraint_, orient(a, b, v)};
+        return side_of_[v].second;
+      };
+      for (std::size_t r = 0; !done && r < ring.size(); ++r) {
+        const int t = ring[r];
+        const LocalTriangle& T = tris[t];
+        const int i = index_of(T, cur);
+        const int u = T.v[next3(i)], w = T.v[prev3(i)];
+        const int ou = side(u), ow = side(w);
         if (ou == 0 && ow > 0) {  // u lies on the segment, ahead of cur
           mark(t, prev3(i), cid);
           target = u;
@@ -131,7 +169,6 @@ class LocalTriangulation {
           target = walk(t, i, a, b, cid, crossing, crossed);
           done = true;
         }
-        if (done) break;
       }
       if (!done) throw std::logic_error("triangulate: constraint direction not found around a vertex");
       if (target < 0) continue;  // a crossing was inserted: look again from cur
@@ -140,6 +177,8 @@ class LocalTriangulation {
         const auto [t, k] = find_edge(cur, target);
         mark(t, k, cid);
       }
+      if (line >= 0) add_line(target, line);  // on the segment (found exactly)
+      prev = cur;
       cur = target;
     }
   }
@@ -150,6 +189,22 @@ class LocalTriangulation {
   typename M::Vertex origin_;
   int last_ = 0;
   std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;
+
+  bool has_line(int v, int line) const { return std::binary_search(lines[v].begin(), lines[v].end(), line); }
+  std::vector<std::pair<int, int>> side_of_;  // per vertex: (constraint_, its orient(a, b, v))
+  int constraint_ = 0;                         // insert_constraint calls so far
+
+  // Whether a, b and c lie on one recorded line: the shortest list is searched in the others.
+  bool on_common_line(int a, int b, int c) const {
+    const std::vector<int>*l[3] = {&lines[a], &lines[b], &lines[c]};
+    if (l[0]->empty() || l[1]->empty() || l[2]->empty()) return false;
+    if (l[1]->size() < l[0]->size()) std::swap(l[0], l[1]);
+    if (l[2]->size() < l[0]->size()) std::swap(l[0], l[2]);
+    for (const int line : *l[0])
+      if (std::binary_search(l[1]->begin(), l[1]->end(), line) && std::binary_search(l[2]->begin(), l[2]->end(), line))
+        return true;
+    return false;
+  }
 
   static int index_of(const LocalTriangle& T, int v) { return T.v[0] == v ? 0 : (T.v[1] == v ? 1 : 2); }
 

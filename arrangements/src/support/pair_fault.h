@@ -35,6 +35,7 @@ PairFault pair_fault(const Tri& a, const std::array<typename K::Point, 3>& pa, c
   if (shared > 0 &&
       (tritri::meet_in_shared_in_projection(K{}, pa, a, pb, b) || tritri::meet_only_in_shared(K{}, pa, a, pb, b)))
     return PairFault::none;
+  if (shared == 0 && tritri::separated_in_projection(K{}, pa, pb)) return PairFault::none;
   const tritri::Result r = tritri::classify<K>(pa[0], pa[1], pa[2], pb[0], pb[1], pb[2]);
   if (result) *result = r;
   if (r.degenerate) return PairFault::degenerate;

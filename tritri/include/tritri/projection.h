@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cmath>
+#include <concepts>
 #include <utility>
 
 #include "tritri/sign.h"
@@ -91,6 +92,10 @@ Plane dominant_plane(const P& a, const P& b, const P& c) {
                                    0.5 * i[2].inf() + 0.5 * i[2].sup()};
     };
     return dominant_plane(approx(a), approx(b), approx(c));
+  } else if constexpr (requires {
+                         { a.approx() } -> std::convertible_to<std::array<double, 3>>;
+                       }) {  // tritri::ImplicitPoint: its cached rounded coordinates
+    return dominant_plane(a.approx(), b.approx(), c.approx());
   } else if constexpr (requires { to_double(a.x()); }) {  // found by argument-dependent lookup
     auto approx = [](const P& p) {
       return std::array<double, 3>{to_double(p.x()), to_double(p.y()), to_double(p.z())};
