@@ -55,7 +55,9 @@ class LocalTriangulation {
   // line; sorted): three vertices on one line are collinear, an exact zero that orient()
   // answers without arithmetic as for on_edge. Coplanar overlaps make these common: a
   // partner's edge crosses t as a chain of constraints, and fans put many lines through
-  // one point (100 coplanar wedges: 151 s, most of it in exact zeros, before this).
+  // one point (40 concurrent coplanar wedges: 7.8 M orient calls, a third of them in the
+  // exact stage, before this, the shortcuts of insert_constraint and the Morton order of
+  // split_triangle_of; 2.6 M after).
   std::vector<std::vector<int>> lines;
 
   LocalTriangulation(tritri::Plane plane, int sign, const typename M::Vertex& origin)
