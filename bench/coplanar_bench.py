@@ -4,7 +4,7 @@ pairs of cylinders whose caps lie in common planes, as a Markdown table (and a l
 
 usage: bench/coplanar_bench.py [--arrange build/bin/arrange] [--baseline OLD_ARRANGE]
            [--families sheets,fans,strips] [--sheet-sizes 10,30,...] [--sizes 100,300,...]
-           [--strip-sizes 100,200,...]
+           [--strip-sizes 100,200,...] [--wedge-sizes 20,40,...]
            [--max-strip-n 1600] [--threads 1,2] [--runs 3] [--timeout 600] [--work DIR]
            [--json OUT.jsonl] [--chart OUT.png]
 
@@ -27,6 +27,12 @@ caps exactly in z = 0 and z = 1, so every cap triangle of A is coplanar with B's
           (long thin triangles across the disk): 2n vertices and 4n - 4 triangles per
           cylinder; the output grows quadratically in n (n = 200 is TwoCylinders itself:
           37,408 output triangles). Only small n: at most --max-strip-n (default 1600).
+  wedges  hostile input (issue 36): n thin wedges in z = 0 whose edges all pass through two
+          points near the origin, wedge i from (-1, y) to (1, -y +- d), y = -1 + 2 (i + 1/2) / n,
+          d = 1 / (2n) (as in tests/test_hostile_polygons.cpp); the even wedges are A, the odd
+          ones B. Rounded to doubles, the edges miss the two points, and their O(n^2)
+          crossings form clouds within about 1e-17 of them, where every predicate is exact
+          (--wedge-sizes).
 
 Every (family, n) runs `arrange A.off B.off --stats --threads T` for each T of --threads, --runs
 times, one process per run (through sh, so that peak_rss_mb is the process's own); with
@@ -68,7 +74,7 @@ REPO = Path(__file__).resolve().parent.parent
 RADIUS, HEIGHT = 30.0, 1.0
 OFFSET, TURN_DEGREES = (10.0, 10.0), 12.0  # cylinder B against A, as in QuickCSG's TwoCylinders
 APEX = (5.0, 5.0)  # the fans' common apex: the midpoint of the two axes
-FAMILIES = ("sheets", "fans", "strips")
+FAMILIES = ("sheets", "fans", "strips", "wedges")
 STAGES = ("detect", "classify", "triangulate")
 COUNTS = ("out_vertices", "out_triangles")
 KEPT = ("t_total_s",) + tuple(f"t_{s}_s" for s in STAGES) + ("peak_rss_mb", "in_triangles", "out_triangles",
@@ -121,8 +127,20 @@ def sheet(n, turn, shift):
     return vertices, triangles
 
 
+def wedges(n, parity):
+    """(vertices, triangles) of the wedges i = parity, parity + 2, ... of n (see the top)."""
+    vertices, triangles = [], []
+    for i in range(parity, n, 2):
+        y, d = -1 + 2 * (i + 0.5) / n, 0.5 / n
+        triangles.append((len(vertices), len(vertices) + 1, len(vertices) + 2))
+        vertices += [(-1.0, y, 0.0), (1.0, -y + d, 0.0), (1.0, -y - d, 0.0)]
+    return vertices, triangles
+
+
 def cylinder_pair(family, n):
     """The meshes A and B of one workload."""
+    if family == "wedges" and n >= 2:
+        return wedges(n, 0), wedges(n, 1)
     if family == "sheets" and n >= 1:
         return sheet(n, 0.0, (0.0, 0.0)), sheet(n, math.radians(TURN_DEGREES), (0.37 * RADIUS / n, 0.21 * RADIUS / n))
     if family not in FAMILIES or n < 3:
@@ -339,7 +357,7 @@ def parse_args(argv):
                     help="the arrange binary to time (default: %(default)s)")
     ap.add_argument("--baseline", type=text, help="an older arrange binary, run alternately with --arrange")
     ap.add_argument("--families", type=family_list, default=list(FAMILIES), metavar="F[,F...]",
-                    help="sheets, fans, strips or several (default: all three)")
+                    help="sheets, fans, strips, wedges or several (default: all four)")
     ap.add_argument("--sheet-sizes", type=int_list(3, MAX_N), default=[10, 30, 100, 300],
                     metavar="N[,N...]", help="cells per side of sheets, 3 to %d each (default: 10,30,100,300)" % MAX_N)
     ap.add_argument("--sizes", type=int_list(3, MAX_N), default=[100, 300, 1000, 3000, 10000],
@@ -349,6 +367,8 @@ def parse_args(argv):
     ap.add_argument("--strip-sizes", type=int_list(3, MAX_N), default=[100, 200, 400, 800, 1600],
                     metavar="N[,N...]", help="segments per cylinder of strips, 3 to --max-strip-n each "
                                              "(default: 100,200,400,800,1600)")
+    ap.add_argument("--wedge-sizes", type=int_list(3, MAX_N), default=[20, 40, 60],
+                    metavar="N[,N...]", help="wedges, 3 to %d each (default: 20,40,60; 100 takes minutes)" % MAX_N)
     ap.add_argument("--max-strip-n", type=integer(3, MAX_N), default=1600,
                     help="the largest strips size accepted: their output is quadratic (default: 1600)")
     ap.add_argument("--threads", type=thread_list, default=[1, 2], metavar="T[,T...]",
@@ -390,7 +410,8 @@ def main(argv=None):
     head = columns(args.threads, args.baseline)
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for family in args.families:
-        sizes = {"sheets": args.sheet_sizes, "fans": args.sizes, "strips": args.strip_sizes}[family]
+        sizes = {"sheets": args.sheet_sizes, "fans": args.sizes, "strips": args.strip_sizes,
+                 "wedges": args.wedge_sizes}[family]
         for n in sizes:
             label_n = f"{family} n={n}"
             active = [(label, b) for label, b in binaries if (family, label) not in stopped]

@@ -13,6 +13,7 @@ import json
 import math
 import sys
 from collections import Counter
+from fractions import Fraction
 
 import pytest
 
@@ -106,6 +107,29 @@ def test_placement_like_two_cylinders():
     assert vb[1][:2] == pytest.approx((39.134, 17.156), abs=1e-4)
     for x, y, _ in vb[:200]:
         assert math.hypot(x - 10, y - 10) == pytest.approx(30, rel=1e-12)
+
+
+@pytest.mark.parametrize("n", [3, 4, 40, 101])
+def test_wedges_concurrent_in_exact_arithmetic(n):
+    a, b = cb.cylinder_pair("wedges", n)
+    assert [len(a[1]), len(b[1])] == [(n + 1) // 2, n // 2]
+    d = Fraction(1, 2 * n)
+    hubs = set()
+    for k, (vertices, triangles) in enumerate((a, b)):
+        assert all(type(c) is float and (j != 2 or c == 0.0) for v in vertices for j, c in enumerate(v))
+        for w, t in enumerate(triangles):
+            i = 2 * w + k
+            p, q, r = (tuple(map(Fraction, vertices[c][:2])) for c in t)
+            assert p[0] == -1 and q[0] == r[0] == 1 and q[1] - r[1] > 0  # a proper wedge
+            # In exact arithmetic its edges meet x = 0 at the two hubs (0, +-d / 2); the doubles
+            # miss them by rounding only (the clouds of crossings the family is for).
+            y = -1 + Fraction(2 * i + 1, n)
+            for (x0, y0), (x1, y1), hub in ((p, q, d / 2), (p, r, -d / 2)):
+                at0 = y0 + (y1 - y0) * (0 - x0) / (x1 - x0)
+                assert abs(at0 - hub) < Fraction(1, 10**14) and abs(y0 - y) < Fraction(1, 10**15)
+                hubs.add(at0 == hub)
+    if n == 101:
+        assert False in hubs  # rounding moved some edges off the hubs
 
 
 def test_deterministic_and_off_round_trip(tmp_path):
@@ -228,7 +252,8 @@ def test_strip_cap_can_be_raised_and_ignored_without_strips(tmp_path):
     assert cb.parse_args(["--arrange", new, "--strip-sizes", "2000", "--families", "fans"]).families == ["fans"]
     args = cb.parse_args(["--arrange", new])
     assert args.sizes == [100, 300, 1000, 3000, 10000] and args.strip_sizes == [100, 200, 400, 800, 1600]
-    assert args.sheet_sizes == [10, 30, 100, 300] and args.families == ["sheets", "fans", "strips"]
+    assert args.sheet_sizes == [10, 30, 100, 300] and args.families == ["sheets", "fans", "strips", "wedges"]
+    assert args.wedge_sizes == [20, 40, 60]
     assert args.threads == [1, 2] and args.runs == 3 and args.timeout == 600
 
 
