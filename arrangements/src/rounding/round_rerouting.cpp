@@ -224,8 +224,9 @@ std::size_t reroute_round(RoundedMesh& m, const std::vector<std::pair<int, int>>
     for (std::size_t t = first_new; t < end; ++t) {
       if (!alive[t]) continue;
       const Tri& f = m.triangles[t];
-      const bool flat = tritri::projection(tritri::DoubleKernel{}, P[f[0]], P[f[1]], P[f[2]]).second == 0;
-      if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2] || !flat) continue;
+      if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2] ||
+          tritri::projection(tritri::DoubleKernel{}, P[f[0]], P[f[1]], P[f[2]]).second != 0)
+        continue;  // not a flat piece of three distinct corners
       // The middle corner: the one opposite the longest side.
       Q longest = -1;
       int middle = 0;

@@ -134,11 +134,14 @@ class LocalTriangulation {
         const LocalTriangle& T = tris[t];
         const int i = index_of(T, cur);
         const int u = T.v[next3(i)], w = T.v[prev3(i)];
-        const int next = u == b || w == b ? b
-                         : prev < 0 || line < 0 ? -1
-                         : u != prev && has_line(u, line) ? u
-                         : w != prev && has_line(w, line) ? w
-                                                          : -1;
+        auto ahead_on_line = [&](int v) { return prev >= 0 && v != prev && has_line(v, line); };
+        int next = -1;
+        if (u == b || w == b)
+          next = b;
+        else if (ahead_on_line(u))
+          next = u;
+        else if (ahead_on_line(w))
+          next = w;
         if (next >= 0) {
           mark(t, u == next ? prev3(i) : next3(i), cid);
           target = next;
@@ -192,19 +195,18 @@ class LocalTriangulation {
   int last_ = 0;
   std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;
 
-  bool has_line(int v, int line) const { return std::binary_search(lines[v].begin(), lines[v].end(), line); }
+  bool has_line(int v, int line) const {
+    return line >= 0 && std::binary_search(lines[v].begin(), lines[v].end(), line);
+  }
   std::vector<std::pair<int, int>> side_of_;  // per vertex: (constraint_, its orient(a, b, v))
   int constraint_ = 0;                         // insert_constraint calls so far
 
   // Whether a, b and c lie on one recorded line: the shortest list is searched in the others.
   bool on_common_line(int a, int b, int c) const {
-    const std::vector<int>*l[3] = {&lines[a], &lines[b], &lines[c]};
-    if (l[0]->empty() || l[1]->empty() || l[2]->empty()) return false;
-    if (l[1]->size() < l[0]->size()) std::swap(l[0], l[1]);
-    if (l[2]->size() < l[0]->size()) std::swap(l[0], l[2]);
-    for (const int line : *l[0])
-      if (std::binary_search(l[1]->begin(), l[1]->end(), line) && std::binary_search(l[2]->begin(), l[2]->end(), line))
-        return true;
+    if (lines[b].size() < lines[a].size()) std::swap(a, b);
+    if (lines[c].size() < lines[a].size()) std::swap(a, c);
+    for (const int line : lines[a])
+      if (has_line(b, line) && has_line(c, line)) return true;
     return false;
   }
 

@@ -48,11 +48,12 @@ std::vector<int> spatial_order(const local::LocalTriangulation<M>& lt, const std
     centre.push_back({mid(box[i]), mid(box[j])});
     ids.push_back(static_cast<int>(l));
   }
-  std::array<double, 2> lo = {0, 0}, hi = {0, 0};
-  for (std::size_t k = 0; k < centre.size(); ++k)
+  if (ids.empty()) return ids;
+  std::array<double, 2> lo = centre[0], hi = centre[0];
+  for (const auto& c : centre)
     for (int a = 0; a < 2; ++a) {
-      lo[a] = k == 0 ? centre[k][a] : std::min(lo[a], centre[k][a]);
-      hi[a] = k == 0 ? centre[k][a] : std::max(hi[a], centre[k][a]);
+      lo[a] = std::min(lo[a], c[a]);
+      hi[a] = std::max(hi[a], c[a]);
     }
   auto cell = [&](double x, int a) {  // 0 .. 2^21 - 1
     const double span = hi[a] - lo[a];
