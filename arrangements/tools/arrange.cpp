@@ -270,7 +270,7 @@ int run(int argc, char** argv) {
           if (check) {
             const ArrangementCheck c = rounded ? check_arrangement(*rounded) : check_arrangement(result.mesh);
             std::fprintf(stderr,
-                         "arrange: check: %zu overlapping output pairs, %zu violations, %zu degenerate triangles\n",
+                         "arrange: check: %zu output pairs checked, %zu violations, %zu degenerate triangles\n",
                          c.pairs_checked, c.violations, c.degenerate_triangles);
             for (const auto& e : c.examples) std::fprintf(stderr, "  %s\n", e.c_str());
             if (!c.ok()) return 3;

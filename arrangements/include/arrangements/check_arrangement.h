@@ -2,7 +2,9 @@
 //
 // check_arrangement(mesh): verifies exactly that the triangles of an arrangement meet only
 // in shared vertices and shared edges: every pair of output triangles whose (conservative)
-// bounding boxes overlap is classified with tritri on the implicit points
+// bounding boxes overlap, and that share a vertex or whose extents along 10 diagonal
+// directions overlap too (tritri/direction_slabs.h: a certified test; pairs apart there
+// do not meet), is classified with tritri on the implicit points
 // (tritri::ImplicitKernel; rational points of an ExactOutputMesh: CGAL::Epeck; the doubles
 // of a RoundedMesh as explicit points), and the pair is a violation unless its intersection is
 // exactly what it shares by vertex id (nothing, a common vertex, or a common edge). Two
@@ -12,7 +14,7 @@
 //
 // Returns the violations (described up to max_reported, all counted; every violating pair
 // of triangles listed). Exact. Cost: one box
-// self-intersection search plus one exact classification per overlapping pair (the
+// self-intersection search plus one exact classification per pair kept (pairs_checked) (the
 // filters make most of them as cheap as double arithmetic); parallel (TBB). Memory: the
 // boxes plus batches of 2^20 pairs (classified as the search finds them), whatever the
 // number of overlapping pairs. A RoundedMesh with distinct positions, no degenerate and no

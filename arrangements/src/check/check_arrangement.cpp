@@ -16,6 +16,7 @@
 #include <string>
 
 #include <tritri/box_pairs.h>
+#include <tritri/direction_slabs.h>
 #include <tritri/classify.h>
 #include <tritri/double_kernel.h>
 #include <tritri/implicit_kernel.h>
@@ -138,8 +139,23 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     out.pairs_checked += pairs.size();
     pairs.clear();
   };
+  // The box pairs that can meet: triangles sharing a corner, or whose slabs along 10
+  // diagonal directions overlap (tritri/direction_slabs.h, certified from the same boxes);
+  // long thin triangles give far more box pairs than that.
+  std::vector<tritri::DirectionSlabs> slabs;
+  if (!(early && !changed)) {
+    slabs.resize(F.size());
+    tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
+      const Tri& f = F[t];
+      slabs[t] = tritri::direction_slabs({lo[f[0]], lo[f[1]], lo[f[2]]}, {hi[f[0]], hi[f[1]], hi[f[2]]});
+    });
+  }
   auto found = [&](int a, int b) {
     detail::memory_checkpoint();
+    const Tri &fa = F[a], &fb = F[b];
+    bool share = false;
+    for (int v : fa) share |= (v == fb[0]) | (v == fb[1]) | (v == fb[2]);
+    if (!share && tritri::slabs_apart(slabs[a], slabs[b])) return;
     pairs.emplace_back(std::min(a, b), std::max(a, b));
     if (pairs.size() == kBatch) flush();
   };

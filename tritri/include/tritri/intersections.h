@@ -35,12 +35,14 @@
 //
 // Exactness: every decision is an exact predicate on the input coordinates (doubles:
 // DoubleKernel; rationals: RationalKernel, filtered); the bounding boxes are exact and
-// closed (rationals: an interval of doubles around each coordinate), so no intersecting
-// pair is missed. No tolerance.
+// closed (rationals: an interval of doubles around each coordinate), and box pairs are
+// dropped only when their certified slabs along 10 diagonal directions are apart
+// (candidate_triangle_pairs.h), so no intersecting pair is missed. No tolerance.
 // Determinism: the output does not depend on the number of threads.
 // Complexity: candidates by CGAL's box_self_intersection_d on the n = #F1 + #F2 boxes of
 // both meshes, keeping the pairs across them (O(n log^3 n + k) for k overlapping boxes,
 // pairs within one mesh included; sequential), then one classification per candidate
+// the slabs leave (candidate_triangle_pairs.h)
 // across the meshes in parallel with oneTBB (tbb::parallel_for over chunks of 1024 pairs,
 // in the calling thread's arena: run it inside a tbb::task_arena to limit the threads).
 // Memory: O(#V1 + #V2 + n + k).
@@ -54,7 +56,7 @@
 #include <utility>
 #include <vector>
 
-#include "tritri/box_pairs.h"
+#include "tritri/candidate_triangle_pairs.h"
 #include "tritri/detail/mesh_pairs.h"
 #include "tritri/intersecting_pair.h"
 
@@ -92,7 +94,7 @@ std::vector<IntersectingPair> intersections(const Eigen::MatrixBase<DerivedV1>& 
   group.resize(tris.size(), 1);
   const int n1 = static_cast<int>(tris1.size());
   std::vector<std::pair<int, int>> pairs;
-  for (const auto& [a, b] : overlapping_triangle_pairs(lo, doubles ? lo : hi, tris, 0, group))
+  for (const auto& [a, b] : candidate_triangle_pairs(lo, doubles ? lo : hi, tris, 0, group))
     pairs.emplace_back(a, b - n1);
   lo = {};
   hi = {};

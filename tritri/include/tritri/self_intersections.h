@@ -44,11 +44,13 @@
 // Exactness: every decision is an exact predicate on the input coordinates (doubles:
 // DoubleKernel; rationals: RationalKernel, filtered); the bounding boxes are the exact
 // minima and maxima of the corners (rationals: of an interval of doubles around each) and
-// closed (boxes that only touch are candidates), so no intersecting pair is missed. No
-// tolerance anywhere.
+// closed (boxes that only touch are candidates), and box pairs are dropped only when their
+// certified slabs along 10 diagonal directions are apart (candidate_triangle_pairs.h), so
+// no intersecting pair is missed. No tolerance anywhere.
 // Determinism: the output does not depend on the number of threads.
 // Complexity: O(n log^3 n + k) for the candidates (CGAL's box_self_intersection_d on n
-// triangles, k overlapping boxes, sequential), then O(k) classifications in parallel with
+// triangles, k overlapping boxes, sequential), then one classification per candidate left
+// by the slabs (candidate_triangle_pairs.h), in parallel with
 // oneTBB (tbb::parallel_for over chunks of 1024 pairs, in the calling thread's arena: run
 // it inside a tbb::task_arena to limit the threads). Memory: O(#V + #F + k).
 // Dependencies: Eigen, CGAL (headers), oneTBB (link TBB::tbb), and tritri's own (GMP).
@@ -59,7 +61,7 @@
 #include <utility>
 #include <vector>
 
-#include "tritri/box_pairs.h"
+#include "tritri/candidate_triangle_pairs.h"
 #include "tritri/detail/mesh_pairs.h"
 #include "tritri/intersecting_pair.h"
 
@@ -74,7 +76,7 @@ std::vector<IntersectingPair> self_intersections(const Eigen::MatrixBase<Derived
   const std::vector<detail::MeshTriangle> tris =
       detail::checked_triangles(F, points.size(), "tritri::self_intersections: F");
 
-  const std::vector<std::pair<int, int>> pairs = overlapping_triangle_pairs(points.lower(), points.upper(), tris);
+  const std::vector<std::pair<int, int>> pairs = candidate_triangle_pairs(points.lower(), points.upper(), tris);
 
   auto corners = [&](const std::pair<int, int>& pair) {
     const detail::MeshTriangle &a = tris[pair.first], &b = tris[pair.second];
