@@ -14,8 +14,8 @@
 //
 // Returns the violations (described up to max_reported, all counted; every violating pair
 // of triangles listed). Exact. Cost: one box
-// self-intersection search plus one exact classification per pair kept (pairs_checked) (the
-// filters make most of them as cheap as double arithmetic); parallel (TBB). Memory: the
+// self-intersection search plus one exact classification per pair kept, counted in
+// pairs_checked (the filters make most of them as cheap as double arithmetic); parallel (TBB). Memory: the
 // boxes plus batches of 2^20 pairs (classified as the search finds them), whatever the
 // number of overlapping pairs. A RoundedMesh with distinct positions, no degenerate and no
 // repeated triangle (what round_safe makes) goes through the pipeline's stage 2 instead

@@ -152,10 +152,7 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
   }
   auto found = [&](int a, int b) {
     detail::memory_checkpoint();
-    const Tri &fa = F[a], &fb = F[b];
-    bool share = false;
-    for (int v : fa) share |= (v == fb[0]) | (v == fb[1]) | (v == fb[2]);
-    if (!share && tritri::slabs_apart(slabs[a], slabs[b])) return;
+    if (tritri::apart_by_slabs(F[a], F[b], slabs[a], slabs[b])) return;
     pairs.emplace_back(std::min(a, b), std::max(a, b));
     if (pairs.size() == kBatch) flush();
   };

@@ -46,12 +46,6 @@ struct VertexBoxes {
   }
 };
 
-bool shares_a_corner(const Tri& a, const Tri& b) {
-  bool shares = false;
-  for (int u : a) shares |= (u == b[0]) | (u == b[1]) | (u == b[2]);
-  return shares;
-}
-
 }  // namespace
 
 template <class M>
@@ -96,8 +90,7 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
     });
   });
   auto visit = [&](int i, int j) {
-    // (Neighbours, most box pairs of a clean mesh, meet in their shared corner: no test.)
-    if (!shares_a_corner(F[i], F[j]) && tritri::slabs_apart(slabs[i], slabs[j])) return;
+    if (tritri::apart_by_slabs(F[i], F[j], slabs[i], slabs[j])) return;
     detail::memory_checkpoint();
     Found& local = found.local();
     ++local.box_pairs;

@@ -14,19 +14,19 @@
 //            meet only in shared corners and edges, share an id >= 0; never paired)
 // returns `pairs`: every pair (i, j), i < j, whose closed bounding boxes overlap and that
 // the exact early-outs below do not settle, sorted, each once; `box_pairs`: how many pairs
-// the broad phase kept for the early-outs (the stat candidate_pairs); `planes`: one M::PlaneCache per
-// triangle (DoubleModel: tritri::PlaneFilter; stage 3 reuses them); `coplanar`: the pairs
-// of `pairs` whose triangles lie in one plane (known from the early-outs' plane signs),
-// for the coplanar-cluster budget (2_coplanar_budget.h).
+// the broad phase kept for the early-outs (the stat candidate_pairs); `planes`: one
+// M::PlaneCache per triangle (DoubleModel: tritri::PlaneFilter; stage 3 reuses them);
+// `coplanar`: the pairs of `pairs` whose triangles lie in one plane (known from the
+// early-outs' plane signs), for the coplanar-cluster budget (2_coplanar_budget.h).
 // Search: tritri::for_each_candidate_pair for doubles (tritri/hub_pairs.h: the box pairs,
 // except that the triangles around a vertex of high degree are paired by their directions
 // from it, so a fan is not paired all to all; a pair left out meets only in that vertex),
 // tritri::for_each_overlapping_pair on the certified intervals of rational points.
 // Broad phase: a box pair of triangles that share no corner is dropped when their extents
-// along 10 diagonal directions are apart (tritri/direction_slabs.h, a certified test: such
-// triangles do not meet; rational points: from their certified boxes). Long thin triangles lying across their
-// boxes' diagonals make most box pairs: EMBER 79741+65004 has 16.7 M box pairs, of which
-// 0.45 M are kept.
+// along 10 diagonal directions are apart (tritri::apart_by_slabs, tritri/direction_slabs.h:
+// a certified test, such triangles do not meet; rational points: from their certified
+// boxes). Long thin triangles lying across their boxes' diagonals make most box pairs:
+// EMBER 79741+65004 has 16.7 M box pairs, of which 0.45 M are kept.
 // Early-outs, as each pair is found (in parallel; stages/2_early_outs.h, which
 // check_arrangement shares):
 //   - neighbours (a shared vertex or edge by index) that provably meet only in what they

@@ -50,10 +50,7 @@ inline std::vector<std::pair<int, int>> candidate_triangle_pairs(std::span<const
                                   tbb::ets_key_per_instance>
       found;  // visit runs on several threads
   for_each_overlapping_pair(Vlo, Vhi, F, threads, group, [&](int i, int j) {
-    const auto &a = F[i], &b = F[j];
-    bool share = false;
-    for (int v : a) share |= (v == b[0]) | (v == b[1]) | (v == b[2]);
-    if (share || !slabs_apart(slabs[i], slabs[j])) found.local().emplace_back(i, j);
+    if (!apart_by_slabs(F[i], F[j], slabs[i], slabs[j])) found.local().emplace_back(i, j);
   });
   detail::box_pairs::Pairs all;
   for (const auto& p : found) all.insert(all.end(), p.begin(), p.end());

@@ -9,6 +9,7 @@
 //   DirectionSlabs s = direction_slabs(p, q, r);   // p, q, r: double corners
 //   DirectionSlabs s = direction_slabs(lo, hi);    // corners known by boxes lo[k]..hi[k]
 //   slabs_apart(s, t)    // true: apart along one direction, so the triangles do not meet
+//   apart_by_slabs(a, b, s, t)   // the same for triangles a, b (corner indices) sharing no corner
 // Exactness: a certified filter. Each extent is computed in double arithmetic and widened
 // by 2^-50 (|x| + |y| + |z|) + 2^-1074 of its point; this exceeds the rounding of the sum
 // of two or three coordinates plus that of the widening subtraction (at most 3 ulps of
@@ -145,6 +146,17 @@ inline bool slabs_apart(const DirectionSlabs& a, const DirectionSlabs& b) {
   for (int d = 0; d < DirectionSlabs::kLanes; ++d) apart |= (a.hi[d] < b.lo[d]) | (b.hi[d] < a.lo[d]);
   return apart;
 #endif
+}
+
+// True when triangles a and b of one mesh (corner indices, with slabs sa and sb) share no
+// corner and their slabs are apart: then they do not meet. Triangles sharing a corner meet
+// there, so their slabs always overlap; the index test skips them cheaply (they are most box
+// pairs of a clean mesh).
+inline bool apart_by_slabs(const std::array<int, 3>& a, const std::array<int, 3>& b, const DirectionSlabs& sa,
+                           const DirectionSlabs& sb) {
+  bool share = false;
+  for (int v : a) share |= (v == b[0]) | (v == b[1]) | (v == b[2]);
+  return !share && slabs_apart(sa, sb);
 }
 
 }  // namespace tritri
