@@ -143,13 +143,7 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
   // diagonal directions overlap (tritri/direction_slabs.h, certified from the same boxes);
   // long thin triangles give far more box pairs than that.
   std::vector<tritri::DirectionSlabs> slabs;
-  if (!(early && !changed)) {
-    slabs.resize(F.size());
-    tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
-      const Tri& f = F[t];
-      slabs[t] = tritri::direction_slabs({lo[f[0]], lo[f[1]], lo[f[2]]}, {hi[f[0]], hi[f[1]], hi[f[2]]});
-    });
-  }
+  if (!(early && !changed)) slabs = tritri::triangle_slabs(lo, hi, F);
   auto found = [&](int a, int b) {
     detail::memory_checkpoint();
     if (tritri::apart_by_slabs(F[a], F[b], slabs[a], slabs[b])) return;

@@ -78,17 +78,9 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
   // Every triangle's extents along 10 diagonal directions (tritri/direction_slabs.h; rational
   // points: from their certified boxes), a certified test after the boxes' that rejects most
   // box pairs of long thin triangles.
-  std::vector<tritri::DirectionSlabs> slabs(F.size());
-  const std::span<const Vec3> lo = boxes.lo_span, hi = boxes.hi_span;
-  arena.execute([&] {
-    tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
-      const Tri& f = F[t];
-      if constexpr (std::is_same_v<Vertex, Vec3>)
-        slabs[t] = tritri::direction_slabs(V[f[0]], V[f[1]], V[f[2]]);
-      else
-        slabs[t] = tritri::direction_slabs({lo[f[0]], lo[f[1]], lo[f[2]]}, {hi[f[0]], hi[f[1]], hi[f[2]]});
-    });
-  });
+  std::vector<tritri::DirectionSlabs> slabs;
+  const std::span<const Vec3> lo = boxes.lo_span, hi = boxes.hi_span;  // doubles: both are V
+  arena.execute([&] { slabs = tritri::triangle_slabs(lo, hi, F); });
   auto visit = [&](int i, int j) {
     if (tritri::apart_by_slabs(F[i], F[j], slabs[i], slabs[j])) return;
     detail::memory_checkpoint();

@@ -125,7 +125,8 @@ void visit_overlapping_pairs(std::vector<Box>& boxes, int workers, const Visit& 
 }
 
 // Sorts the pairs the workers found and drops repeats.
-inline Pairs sorted_unique(tbb::enumerable_thread_specific<Pairs>& found) {
+template <class PerThreadPairs>  // a tbb::enumerable_thread_specific of Pairs
+Pairs sorted_unique(PerThreadPairs& found) {
   Pairs all;
   std::size_t n = 0;
   for (const Pairs& p : found) n += p.size();

@@ -17,8 +17,6 @@
 #pragma once
 
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 #include <tbb/task_arena.h>
 
 #include <array>
@@ -38,23 +36,17 @@ inline std::vector<std::pair<int, int>> candidate_triangle_pairs(std::span<const
                                                                  std::span<const std::array<int, 3>> F,
                                                                  int threads = 0,
                                                                  std::span<const std::int64_t> group = {}) {
-  std::vector<DirectionSlabs> slabs(F.size());
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute([&] {
-    tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
-      const auto& f = F[t];
-      slabs[t] = direction_slabs({Vlo[f[0]], Vlo[f[1]], Vlo[f[2]]}, {Vhi[f[0]], Vhi[f[1]], Vhi[f[2]]});
-    });
-  });
+  std::vector<DirectionSlabs> slabs;
+  arena.execute([&] { slabs = triangle_slabs(Vlo, Vhi, F); });
   tbb::enumerable_thread_specific<detail::box_pairs::Pairs, tbb::cache_aligned_allocator<detail::box_pairs::Pairs>,
                                   tbb::ets_key_per_instance>
       found;  // visit runs on several threads
   for_each_overlapping_pair(Vlo, Vhi, F, threads, group, [&](int i, int j) {
     if (!apart_by_slabs(F[i], F[j], slabs[i], slabs[j])) found.local().emplace_back(i, j);
   });
-  detail::box_pairs::Pairs all;
-  for (const auto& p : found) all.insert(all.end(), p.begin(), p.end());
-  arena.execute([&] { tbb::parallel_sort(all.begin(), all.end()); });
+  std::vector<std::pair<int, int>> all;
+  arena.execute([&] { all = detail::box_pairs::sorted_unique(found); });
   return all;
 }
 

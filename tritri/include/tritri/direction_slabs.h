@@ -10,6 +10,7 @@
 //   DirectionSlabs s = direction_slabs(lo, hi);    // corners known by boxes lo[k]..hi[k]
 //   slabs_apart(s, t)    // true: apart along one direction, so the triangles do not meet
 //   apart_by_slabs(a, b, s, t)   // the same for triangles a, b (corner indices) sharing no corner
+//   triangle_slabs(Vlo, Vhi, F)   // every triangle's slabs, in parallel
 // Exactness: a certified filter. Each extent is computed in double arithmetic and widened
 // by 2^-50 (|x| + |y| + |z|) + 2^-1074 of its point; this exceeds the rounding of the sum
 // of two or three coordinates plus that of the widening subtraction (at most 3 ulps of
@@ -21,11 +22,16 @@
 // Cost: about 70 flops per triangle, 96 bytes; slabs_apart is 6 four-wide compares.
 #pragma once
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <limits>
+#include <span>
+#include <vector>
 
 namespace tritri {
 
@@ -123,6 +129,22 @@ inline DirectionSlabs direction_slabs(const std::array<double, 3>& p, const std:
 inline DirectionSlabs direction_slabs(const std::array<std::array<double, 3>, 3>& lo,
                                       const std::array<std::array<double, 3>, 3>& hi) {
   return detail::to_float_slabs(detail::direction_extents(lo, hi));
+}
+
+// The slabs of every triangle of F over vertex boxes [Vlo[v], Vhi[v]] (the same span for
+// double points, which then take the points' own, cheaper computation); in parallel (oneTBB,
+// in the calling thread's arena).
+inline std::vector<DirectionSlabs> triangle_slabs(std::span<const std::array<double, 3>> Vlo,
+                                                  std::span<const std::array<double, 3>> Vhi,
+                                                  std::span<const std::array<int, 3>> F) {
+  std::vector<DirectionSlabs> slabs(F.size());
+  const bool points = Vlo.data() == Vhi.data();
+  tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
+    const auto& f = F[t];
+    slabs[t] = points ? direction_slabs(Vlo[f[0]], Vlo[f[1]], Vlo[f[2]])
+                      : direction_slabs({Vlo[f[0]], Vlo[f[1]], Vlo[f[2]]}, {Vhi[f[0]], Vhi[f[1]], Vhi[f[2]]});
+  });
+  return slabs;
 }
 
 // True when the slabs of a and b are apart along one direction (then the triangles do not
