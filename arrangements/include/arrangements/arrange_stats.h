@@ -89,7 +89,7 @@ inline constexpr auto kArrangeStats = std::make_tuple(
     stat_entry("removed_duplicate", &ArrangeStats::removed_duplicate, 0,
                "duplicate triangles removed (the same three positions)"),
     stat_entry("candidate_pairs", &ArrangeStats::candidate_pairs, 0,
-               "triangle pairs the broad phase kept: boxes overlap, and they share a corner or their extents along 10 diagonal directions overlap (around a hub vertex: those whose directions from it meet)"),
+               "triangle pairs the broad phase kept: boxes overlap, they share no vertex whose star is embedded (doubles), and they share a corner or their extents along 10 diagonal directions overlap (around a hub vertex: those whose directions from it meet)"),
     stat_entry("classified_pairs", &ArrangeStats::classified_pairs, 0,
                "candidate pairs left to classify (not settled by a plane or as neighbours)"),
     stat_entry("intersecting_pairs", &ArrangeStats::intersecting_pairs, 0,

@@ -45,8 +45,9 @@
 // DoubleKernel; rationals: RationalKernel, filtered); the bounding boxes are the exact
 // minima and maxima of the corners (rationals: of an interval of doubles around each) and
 // closed (boxes that only touch are candidates), and box pairs are dropped only when their
-// certified slabs along 10 diagonal directions are apart (candidate_triangle_pairs.h), so
-// no intersecting pair is missed. No tolerance anywhere.
+// certified slabs along 10 diagonal directions are apart or (doubles) when they share a
+// vertex whose star is embedded, an exact certificate that they meet only in what they
+// share (candidate_triangle_pairs.h, embedded_stars.h), so no reported pair is missed. No tolerance anywhere.
 // Determinism: the output does not depend on the number of threads.
 // Complexity: O(n log^3 n + k) for the candidates (CGAL's box_self_intersection_d on n
 // triangles, k overlapping boxes, sequential), then one classification per candidate left
@@ -58,6 +59,8 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -76,7 +79,12 @@ std::vector<IntersectingPair> self_intersections(const Eigen::MatrixBase<Derived
   const std::vector<detail::MeshTriangle> tris =
       detail::checked_triangles(F, points.size(), "tritri::self_intersections: F");
 
-  const std::vector<std::pair<int, int>> pairs = candidate_triangle_pairs(points.lower(), points.upper(), tris);
+  // Doubles: neighbours around a vertex whose star is embedded meet only in what they share
+  // (never reported), so they are not candidates.
+  std::vector<std::uint8_t> embedded;
+  if constexpr (std::is_same_v<Kernel, DoubleKernel>) embedded = embedded_stars(points.points, tris);
+  const std::vector<std::pair<int, int>> pairs =
+      candidate_triangle_pairs(points.lower(), points.upper(), tris, 0, {}, embedded);
 
   auto corners = [&](const std::pair<int, int>& pair) {
     const detail::MeshTriangle &a = tris[pair.first], &b = tris[pair.second];
