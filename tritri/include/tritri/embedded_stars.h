@@ -100,14 +100,15 @@ inline int fan_order(const std::array<int, 2>* link, int d, Scratch& s) {
 }
 
 // Whether the star of p, in fan order, passes the certificate above in the projection
-// given by orient(b, c) (the sign of the turn p, b, c seen along the projection), for the
-// turn sign `turn`.
+// given by orient(b, c) (the sign of the turn p, b, c seen along the projection): every
+// triangle turns the way the first one does (not zero), and once.
 template <class Orient>
-bool turns_once(const std::array<int, 2>* link, const std::vector<int>& order, bool closed, Sign turn,
-                const Orient& orient) {
+bool turns_once(const std::array<int, 2>* link, const std::vector<int>& order, bool closed, const Orient& orient) {
   const auto d = static_cast<int>(order.size());
+  const Sign turn = orient(link[order[0]][0], link[order[0]][1]);
+  if (turn == Sign::Zero) return false;
   const Sign against = turn == Sign::Positive ? Sign::Negative : Sign::Positive;
-  for (int k = 0; k < d; ++k)
+  for (int k = 1; k < d; ++k)
     if (orient(link[order[static_cast<std::size_t>(k)]][0], link[order[static_cast<std::size_t>(k)]][1]) != turn)
       return false;
   // No wedge but the first (and, closed, the last, which ends on it) holds the direction
@@ -163,8 +164,7 @@ inline bool star_embedded(std::span<const std::array<double, 3>> V, int v, const
     const auto& r = V[static_cast<std::size_t>(c)];
     return orient2d(p[x], p[y], q[x], q[y], r[x], r[y]);
   };
-  const Sign turn = orient_axis(link[s.order[0]][0], link[s.order[0]][1]);
-  if (turn != Sign::Zero && turns_once(link, s.order, closed, turn, orient_axis)) return true;
+  if (turns_once(link, s.order, closed, orient_axis)) return true;
   // Along the normal (sharp corners, where an axis sees some triangle edge-on): the point
   // q = p + n scaled to the larger of |p| and the star's reach, so that rounding q moves
   // q - p by a relative 2^-52 at most and the direction stays that of n.
@@ -175,8 +175,7 @@ inline bool star_embedded(std::span<const std::array<double, 3>> V, int v, const
   auto orient_normal = [&](int b, int c) {
     return orient3d(p, V[static_cast<std::size_t>(b)], V[static_cast<std::size_t>(c)], q);
   };
-  const Sign first_turn = orient_normal(link[s.order[0]][0], link[s.order[0]][1]);
-  return first_turn != Sign::Zero && turns_once(link, s.order, closed, first_turn, orient_normal);
+  return turns_once(link, s.order, closed, orient_normal);
 }
 
 }  // namespace detail::embedded_stars
