@@ -16,6 +16,8 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <limits>
+#include <sstream>
 #include <string>
 
 #include <tritri/tritri.h>
@@ -110,6 +112,51 @@ TEST(ImplicitPoint, ToDoubleRoundsSubnormalCoordinatesCorrectly) {
     EXPECT_TRUE(is_nearest_double(d[k], (*ref)[k]))
         << "coordinate " << k << ": to_double gives " << std::hexfloat << d[k] << ", exact " << (*ref)[k].get_str();
   EXPECT_EQ(d[0], 0x1p-1074);
+}
+
+// to_double divides the exact integers once where the result is a normal double, and goes
+// through the rational elsewhere. The line from the origin to (s, 0, 1) meets the plane
+// through (0, 0, 1/2), (a, 0, 1/2 + b) and (0, 1, 1/2) at x = s / (2 (1 - s b / a)), here
+// on both sides of each switch: 2^-1022 (1 +- 2^-75)^-1 (around the smallest normal);
+// (2^-1022 - 2^-1075) (1 - (+-2^-75 - 2^-128))^-1 (around the midpoint between the largest
+// subnormal and 2^-1022, where a first rounding to 53 bits would tie); 2^1024 (1 +- 2^-50)^-1
+// (around the largest double and the overflow).
+TEST(ImplicitPoint, ToDoubleIsTheNearestDoubleAroundTheEndsOfTheNormalRange) {
+  struct Case {
+    double s, a, b;
+    double lo, hi;  // the exact x lies strictly between lo and hi (the case tests what it says)
+  };
+  const double tiny = 0x1p-1022, below_tiny = 0x1p-1022 - 0x1p-1074, max = std::numeric_limits<double>::max();
+  const Case cases[] = {
+      {0x1p-1021, 0x1p-946, 1, tiny, 0x1p-1021},    // just above 2^-1022
+      {0x1p-1021, 0x1p-946, -1, below_tiny, tiny},  // just below
+      {0x1p-1021 - 0x1p-1074, 0x1p-946, 1, below_tiny, tiny},  // just above the midpoint
+      {0x1p-1021 - 0x1p-1074, 0x1p-946, -1, below_tiny, tiny},  // just below it
+      {0x1p1023, 0x1p1023, 0.75 - 0x1p-52, 0x1p1023, max},  // a normal double below the largest
+      {0x1p1023, 0x1p1023, 0.75 + 0x1p-52, max, INFINITY},  // beyond: overflows
+  };
+  for (const Case& c : cases) {
+    const Point p{0, 0, 0}, q{c.s, 0, 1};
+    const Triple plane{Point{0, 0, 0.5}, Point{c.a, 0, 0.5 + c.b}, Point{0, 1, 0.5}};
+    const auto ref = tritri_test::exact_lpi(p, q, plane);
+    ASSERT_TRUE(ref.has_value());
+    const Q& x = (*ref)[0];
+    std::ostringstream out;
+    out << std::hexfloat << "s " << c.s << " b " << c.b << ": exact " << x.get_str();
+    const std::string where = out.str();
+    if (std::isfinite(c.hi)) {
+      EXPECT_TRUE(Q(c.lo) < x && x < Q(c.hi)) << where;
+    }
+    const auto d = tritri::to_double(ImplicitPoint::lpi(p, q, plane[0], plane[1], plane[2]));
+    if (std::isinf(c.hi)) {
+      // Beyond the midpoint between the largest double and 2^1024: infinity.
+      EXPECT_TRUE(x > Q(max) + Q(0x1p970)) << where;
+      EXPECT_EQ(d[0], INFINITY) << where;
+    } else {
+      EXPECT_TRUE(is_nearest_double(d[0], x)) << where << std::hexfloat << ", to_double " << d[0];
+    }
+    EXPECT_EQ(d[1], 0.0) << where;
+  }
 }
 
 // ---------------------------------------------------------------------------------------

@@ -1,6 +1,5 @@
 #include "stages/4_intersection_graph.h"
 
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
@@ -13,6 +12,7 @@
 
 #include "models/double_model.h"
 #include "models/exact_model.h"
+#include "stages/4_share_coplanar.h"
 
 namespace arrangements {
 namespace {
@@ -136,157 +136,12 @@ SegmentSupport segment_support(const std::vector<Tri>& F, const PairIntersection
   return sup;
 }
 
-// Where point x (in t's plane) lies in closed triangle t, which has orientation
-// `orientation` != 0 in `plane`. A vertex of t is recognised by its id; a point at a
-// vertex's position with another id cannot occur (points are deduplicated) and is
-// reported Outside. The three edge signs are first asked of a filter on `box`, x's
-// certified box (M::box; M::side_bounded: a few flops, decides unless x is near the edge's line);
-// only the undecided ones go to M::side_of_line.
-template <class M>
-Location locate(const std::vector<typename M::Vertex>& V, const std::vector<typename M::Point>& P, const Tri& t,
-                tritri::Plane plane, int orientation, int x, const typename M::Box& box) {
-  for (int k = 0; k < 3; ++k)
-    if (t[k] == x) return Location::vertex(k);
-  int s[3];
-  for (int k = 0; k < 3; ++k) {
-    s[k] = M::side_bounded(V[t[k]], V[t[(k + 1) % 3]], box, plane);
-    if (s[k] != tritri::kUndecided && s[k] * orientation < 0) return Location::outside();
-  }
-  for (int k = 0; k < 3; ++k) {
-    if (s[k] == tritri::kUndecided)
-      s[k] = M::side_of_line(P[t[k]], P[t[(k + 1) % 3]], P[x], plane, &P[t[(k + 2) % 3]]);
-    s[k] *= orientation;
-    if (s[k] < 0) return Location::outside();
-  }
-  const Location l = tritri::location_from_edge_signs(s);
-  return l.kind == Location::Vertex ? Location::outside() : l;
-}
-
-struct Additions {
-  std::vector<int> inside;
-  std::vector<std::array<int, 2>> on_edge;  // (edge id, point)
-  std::vector<std::array<int, 2>> segments;
-};
-
-// Coplanar partners share their points and segments (as in the 2020 pipeline): for every
-// triangle t and each coplanar partner u, the points of u (inside u or on its edges) that
-// lie in the closed triangle t are added to t (inside t, or on the edge of t they lie on),
-// and u's segments whose endpoints both lie in t are added to t's segments. Without it, a
-// constraint of u meeting u's edge inside t would cross t's copy of that edge at a point t
-// does not know, and t's triangulation would construct it again. Additions are computed
-// from the lists as they were before, so the result does not depend on processing order.
-// Precondition: the lists are sorted and unique; so are they after.
-// Exactness: point location is orient2d on implicit points (a certified filter, then
-// tritri's filtered exact predicates) in a projection where t is not degenerate. Cost:
-// one location per distinct point of t's coplanar partners (points on an edge two
-// partners share, and segment ends, are located once; a per-thread stamp per point
-// dedups them without a sort), most of them settled by boxes computed once per point.
-// Memory: a box per point and 6 bytes per point per thread, only when coplanar pairs exist.
-template <class M>
-void share_coplanar(const std::vector<typename M::Vertex>& V, const std::vector<Tri>& F,
-                    BasicIntersectionGraph<typename M::Point>& g) {
-  std::vector<Additions> add(F.size());
-  // Per thread, per point: the triangle that last listed it, and what was found there.
-  struct Scratch {
-    std::vector<int> seen;
-    std::vector<char> is_point, inside_closed;
-    std::vector<int> ids;
-    void resize(std::size_t n) {
-      seen.assign(n, -1);
-      is_point.assign(n, 0);
-      inside_closed.assign(n, 0);
-    }
-  };
-  tbb::enumerable_thread_specific<Scratch> scratch;
-  // Every point's certified box, once (a point is listed by every triangle whose partner
-  // holds it).
-  std::vector<typename M::Box> boxes(g.points.size());
-  tbb::parallel_for(std::size_t{0}, g.points.size(), [&](std::size_t x) { boxes[x] = M::box(g.points[x]); });
-  tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
-    if (g.coplanar_partners[t].empty()) return;
-    const Tri& tri = F[t];
-    // (Named variables, not a structured binding: the lambda below captures them.)
-    const std::pair<tritri::Plane, int> proj = M::projection(V[tri[0]], V[tri[1]], V[tri[2]]);
-    const tritri::Plane plane = proj.first;
-    const int orientation = proj.second;
-    Additions& a = add[t];
-    Vec3 lo, hi;
-    M::bounds(V[tri[0]], lo, hi);
-    for (int k = 1; k < 3; ++k) {
-      Vec3 l, h;
-      M::bounds(V[tri[k]], l, h);
-      for (int c = 0; c < 3; ++c) {
-        lo[c] = std::min(lo[c], l[c]);
-        hi[c] = std::max(hi[c], h[c]);
-      }
-    }
-    // The points to locate, each id once (stamped with t in this thread's scratch, no
-    // sort: a triangle of a fan crossing another fan has tens of partners holding
-    // thousands of ids); whether it is one of a partner's points, or only a segment end
-    // (such as a partner's corner).
-    Scratch& sc = scratch.local();
-    if (sc.seen.empty()) sc.resize(g.points.size());
-    sc.ids.clear();
-    auto visit = [&](int x, bool point) {
-      if (sc.seen[x] != static_cast<int>(t)) {
-        sc.seen[x] = static_cast<int>(t);
-        sc.is_point[x] = point;
-        sc.ids.push_back(x);
-      } else if (point) {
-        sc.is_point[x] = 1;
-      }
-    };
-    for (int u : g.coplanar_partners[t]) {
-      for (int x : g.triangle_points[u]) visit(x, true);
-      for (int k = 0; k < 3; ++k)
-        for (int x : g.edge_points[g.triangle_edges[u][k]]) visit(x, true);
-      for (const auto& s : g.triangle_segments[u]) {
-        visit(s[0], false);
-        visit(s[1], false);
-      }
-    }
-    for (int x : sc.ids) {
-      // A box around the point disjoint from t's box: outside, with no predicate.
-      const typename M::Box& b = boxes[x];
-      bool apart = false;
-      for (int c = 0; c < 3; ++c) apart = apart || b[c].hi < lo[c] || b[c].lo > hi[c];
-      const Location where = apart ? Location::outside() : locate<M>(V, g.points, tri, plane, orientation, x, b);
-      sc.inside_closed[x] = where.kind != Location::Outside;
-      if (!sc.is_point[x]) continue;
-      if (where.kind == Location::Interior)
-        a.inside.push_back(x);
-      else if (where.kind == Location::Edge)
-        a.on_edge.push_back({g.triangle_edges[t][where.id], x});
-    }
-    for (int u : g.coplanar_partners[t])
-      for (const auto& s : g.triangle_segments[u])
-        if (sc.inside_closed[s[0]] && sc.inside_closed[s[1]]) a.segments.push_back(s);
-  });
-  std::vector<int> edges;
-  for (std::size_t t = 0; t < F.size(); ++t) {
-    if (!add[t].inside.empty()) {
-      g.triangle_points[t].insert(g.triangle_points[t].end(), add[t].inside.begin(), add[t].inside.end());
-      sort_unique(g.triangle_points[t]);
-    }
-    for (const auto& e : add[t].on_edge) {
-      g.edge_points[e[0]].push_back(e[1]);
-      edges.push_back(e[0]);
-    }
-    if (!add[t].segments.empty()) {
-      g.triangle_segments[t].insert(g.triangle_segments[t].end(), add[t].segments.begin(), add[t].segments.end());
-      sort_unique(g.triangle_segments[t]);
-    }
-  }
-  sort_unique(edges);
-  for (int e : edges) sort_unique(g.edge_points[e]);
-}
-
 }  // namespace
 
 template <class M>
 BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::vector<typename M::Vertex>& V,
                                                                    const std::vector<Tri>& F,
-                                                                   const PairRecords& pairs) {
+                                                                   const PairRecords& pairs, bool share) {
   using Point = typename M::Point;
   using Key = typename M::Key;
   BasicIntersectionGraph<Point> g;
@@ -463,7 +318,7 @@ BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::ve
   g.segment_supports.erase(std::unique(g.segment_supports.begin(), g.segment_supports.end()),
                            g.segment_supports.end());
   found = {};
-  if (g.coplanar_pairs > 0) share_coplanar<M>(V, F, g);  // keeps the lists sorted and unique
+  if (share && g.coplanar_pairs > 0) share_coplanar<M>(V, F, g);  // keeps the lists sorted and unique
   std::vector<std::array<int, 2>> all_segments;
   std::size_t listed = 0;
   for (const auto& v : g.triangle_segments) listed += v.size();
@@ -475,8 +330,8 @@ BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::ve
 }
 
 template IntersectionGraph build_intersection_graph<DoubleModel>(const std::vector<Vec3>&, const std::vector<Tri>&,
-                                                                 const PairRecords&);
+                                                                 const PairRecords&, bool);
 template BasicIntersectionGraph<ExactModel::Point> build_intersection_graph<ExactModel>(
-    const std::vector<ExactModel::Vertex>&, const std::vector<Tri>&, const PairRecords&);
+    const std::vector<ExactModel::Vertex>&, const std::vector<Tri>&, const PairRecords&, bool);
 
 }  // namespace arrangements

@@ -70,11 +70,13 @@ using IntersectionGraph = BasicIntersectionGraph<tritri::ImplicitPoint>;
 // DoubleModel.
 // Inputs:  V, F the preprocessed soup (merged vertices, no degenerate triangles);
 //          pairs the records of intersecting pairs (classify_pairs).
+//          share: run share_coplanar (4_share_coplanar.h) at the end; false only to test
+//          that step on its own.
 // Output:  the graph. Exact. Cost: O(P log P) for P new points plus the records.
 template <class M>
 BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::vector<typename M::Vertex>& V,
                                                                    const std::vector<Tri>& F,
-                                                                   const PairRecords& pairs);
+                                                                   const PairRecords& pairs, bool share = true);
 
 inline IntersectionGraph build_intersection_graph(const std::vector<Vec3>& V, const std::vector<Tri>& F,
                                                   const PairRecords& pairs) {

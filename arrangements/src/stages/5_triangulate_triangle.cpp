@@ -73,6 +73,135 @@ std::vector<int> spatial_order(const local::LocalTriangulation<M>& lt, const std
   return ids;
 }
 
+// The coplanar partners covering each local triangle of t: (local triangle, index in
+// g.coplanar_partners[t]) pairs, sorted. A triangle is covered by partner q when its three
+// corners lie in q's closed triangle; q's edges inside t are constraints, so no local
+// triangle straddles q's boundary, and the triangles in q form a connected set (they tile
+// the convex q and t's intersection).
+// So each partner is found from one seed triangle by a flood fill: a neighbour across an
+// edge is in q when its third corner is. The seed is a triangle around a vertex in closed
+// q and t, when their intersection has an area (any such vertex has one: the intersection
+// is convex, so it fills a wedge of positive angle at the vertex): q's corners that are
+// vertices of t, or the vertices of t's edges in closed q, which are a run along each edge
+// found by binary search (each side of q's edge lines is a linear function along t's
+// edge). An intersection with an area touches t's boundary or holds q's corners; where it
+// meets t's edge, its ends are points of the pair's classification, vertices here.
+// Cost: O(log k) predicates per partner and edge, plus the covered triangles and their
+// neighbours, not one test per partner and triangle (two coplanar fans of n long thin
+// triangles: O(n) partners and regions in every triangle, cubic in all).
+template <class M>
+std::vector<std::array<int, 2>> partner_covers(const BasicTriangleSoup<typename M::Vertex>& soup,
+                                               const BasicIntersectionGraph<typename M::Point>& g, int t,
+                                               tritri::Plane plane, local::LocalTriangulation<M>& lt,
+                                               const std::array<std::vector<int>, 3>& chain,
+                                               const std::map<int, int>& local_of) {
+  std::vector<std::array<int, 2>> covered;
+  const auto& partners = g.coplanar_partners[t];
+  if (partners.empty()) return covered;
+  const auto& V = soup.vertices;
+  const Tri& tri = soup.triangles[t];
+  const std::size_t nv = lt.pts.size(), nt = lt.tris.size();
+  // Triangles around each vertex (CSR).
+  std::vector<int> first(nv + 1, 0), around(3 * nt);
+  for (const LocalTriangle& T : lt.tris)
+    for (int k = 0; k < 3; ++k) ++first[T.v[k] + 1];
+  for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
+  {
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for (std::size_t T = 0; T < nt; ++T)
+      for (int k = 0; k < 3; ++k) around[fill[lt.tris[T].v[k]]++] = static_cast<int>(T);
+  }
+  std::vector<typename M::Box> box(nv);
+  std::vector<char> has_box(nv, 0);
+  auto box_of = [&](int v) -> const typename M::Box& {
+    if (!has_box[v]) {
+      box[v] = M::box(lt.pts[v]);
+      has_box[v] = 1;
+    }
+    return box[v];
+  };
+  std::vector<int> tested_for(nv, -1), visited_for(nt, -1), stack;
+  std::vector<char> inside(nv, 0);
+  for (std::size_t qi = 0; qi < partners.size(); ++qi) {
+    const int q = static_cast<int>(qi);
+    const Tri& u = soup.triangles[partners[qi]];
+    const int sign = tritri::to_int(M::orient2d(V[u[0]], V[u[1]], V[u[2]], plane));
+    // The side of u's edge line e that local vertex v lies on, positive inside u.
+    auto side = [&](int e, int v) {
+      int s = M::side_bounded(V[u[e]], V[u[(e + 1) % 3]], box_of(v), plane);
+      if (s == tritri::kUndecided)
+        s = M::side_of_line(g.points[u[e]], g.points[u[(e + 1) % 3]], lt.pts[v], plane, &g.points[u[(e + 2) % 3]]);
+      return sign * s;
+    };
+    auto in_partner = [&](int v) {  // v in u's closed triangle, once per (q, v)
+      if (tested_for[v] == q) return inside[v] == 1;
+      tested_for[v] = q;
+      bool in = true;
+      for (int e = 0; e < 3 && in; ++e) in = side(e, v) >= 0;
+      inside[v] = in;
+      return in;
+    };
+    // A vertex in closed u: one of u's corners, or a vertex of a run along t's edges.
+    int seed_vertex = -1;
+    for (int k = 0; k < 3 && seed_vertex < 0; ++k) {
+      const auto it = local_of.find(u[k]);
+      if (it != local_of.end()) seed_vertex = it->second;
+    }
+    for (int f = 0; f < 3 && seed_vertex < 0; ++f) {
+      const std::vector<int>& c = chain[f];
+      std::size_t lo = 0, hi = c.size();
+      for (int e = 0; e < 3 && lo < hi; ++e) {
+        auto corner_side = [&](int k) {
+          return sign * tritri::to_int(M::orient2d(V[u[e]], V[u[(e + 1) % 3]], V[tri[k]], plane));
+        };
+        const int s0 = corner_side(f), s1 = corner_side((f + 1) % 3);
+        if (s0 >= 0 && s1 >= 0) continue;
+        if (s0 < 0 && s1 < 0) {
+          lo = hi;
+          break;
+        }
+        std::size_t a = lo, b = hi;  // the first index where the sign turns
+        while (a < b) {
+          const std::size_t mid = a + (b - a) / 2;
+          if ((side(e, c[mid]) >= 0) == (s0 < 0))
+            b = mid;
+          else
+            a = mid + 1;
+        }
+        (s0 >= 0 ? hi : lo) = a;
+      }
+      if (lo < hi) seed_vertex = c[lo];
+    }
+    if (seed_vertex < 0) continue;
+    int seed = -1;
+    for (int i = first[seed_vertex]; i < first[seed_vertex + 1] && seed < 0; ++i) {
+      const LocalTriangle& T = lt.tris[around[i]];
+      if (in_partner(T.v[0]) && in_partner(T.v[1]) && in_partner(T.v[2])) seed = around[i];
+    }
+    if (seed < 0) continue;  // q and t meet in no area
+    visited_for[seed] = q;
+    stack.assign(1, seed);
+    while (!stack.empty()) {
+      const int T = stack.back();
+      stack.pop_back();
+      covered.push_back({T, q});
+      const LocalTriangle& L = lt.tris[T];
+      for (int k = 0; k < 3; ++k) {
+        const int n = L.n[k];
+        if (n < 0 || visited_for[n] == q) continue;
+        visited_for[n] = q;
+        const LocalTriangle& N = lt.tris[n];
+        int w = -1;
+        for (int j = 0; j < 3; ++j)
+          if (N.v[j] != L.v[local::next3(k)] && N.v[j] != L.v[local::prev3(k)]) w = N.v[j];
+        if (in_partner(w)) stack.push_back(n);
+      }
+    }
+  }
+  std::sort(covered.begin(), covered.end());
+  return covered;
+}
+
 }  // namespace
 
 template <class M>
@@ -144,24 +273,26 @@ Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::V
   };
   // Many segments of t share a support plane (a partner's plane): each distinct plane is
   // tested once (a coplanar partner's plane costs three exact zeros).
-  std::vector<std::pair<std::array<int, 3>, bool>> tested;
+  // tested[i]: whether the i-th distinct plane is transverse; tested_index: its i.
+  std::vector<char> tested;
+  std::map<std::array<int, 3>, int> tested_index;
   for (std::size_t s = 0; s < segs.size(); ++s) {
     auto it = std::lower_bound(g.segment_supports.begin(), g.segment_supports.end(), segs[s],
                                [](const SegmentSupport& x, const std::array<int, 2>& e) { return x.ends < e; });
     bool found = false;
     for (; !found && it != g.segment_supports.end() && it->ends == segs[s]; ++it)
       for (const auto& pl : it->planes) {
-        const std::array<Vertex, 3> P = {at(pl[0]), at(pl[1]), at(pl[2])};
-        auto known = std::find_if(tested.begin(), tested.end(), [&](const auto& e) { return e.first == pl; });
-        if (known == tested.end()) {
+        auto [known, fresh] = tested_index.emplace(pl, static_cast<int>(tested.size()));
+        if (fresh) {
+          const std::array<Vertex, 3> P = {at(pl[0]), at(pl[1]), at(pl[2])};
           bool transverse = false;
           for (int k = 0; k < 3 && !transverse; ++k)
             transverse = M::orient3d(P[0], P[1], P[2], V[tri[k]]) != tritri::Sign::Zero;
-          known = tested.insert(tested.end(), {pl, transverse});
+          tested.push_back(transverse);
         }
-        if (known->second) {
-          support[s] = P;
-          line_of[s] = static_cast<int>(known - tested.begin());
+        if (tested[static_cast<std::size_t>(known->second)]) {
+          support[s] = {at(pl[0]), at(pl[1]), at(pl[2])};
+          line_of[s] = known->second;
           found = true;
           break;
         }
@@ -252,53 +383,18 @@ Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::V
     for (std::size_t l = 0; l < points; ++l) insert(static_cast<int>(l));
   }
 
-  // Coplanar partners: which of them cover each local triangle (all three corners in
-  // the partner's closed triangle; local triangles never straddle a partner's edge,
-  // because its edges inside t are constraints of t).
+  // Coplanar partners: which of them cover each local triangle (partner_covers), each
+  // triangle emitted once, by the smallest triangle covering it.
   const auto& partners = g.coplanar_partners[t];
-  std::vector<int> partner_sign(partners.size());
-  for (std::size_t q = 0; q < partners.size(); ++q) {
-    const Tri& u = soup.triangles[partners[q]];
-    partner_sign[q] = tritri::to_int(M::orient2d(V[u[0]], V[u[1]], V[u[2]], plane));
-  }
-  // Whether local vertex v lies in partner q's closed triangle, computed once per pair
-  // (a vertex has several local triangles): the filter on the vertex's certified box
-  // first, side_of_line for the edges it leaves undecided.
-  std::vector<std::int8_t> in_partner(partners.size() * lt.pts.size(), -1);
-  std::vector<typename M::Box> box(lt.pts.size());
-  std::vector<char> has_box(lt.pts.size(), 0);
-  auto in_closed_partner = [&](std::size_t q, int v) {
-    std::int8_t& known = in_partner[q * lt.pts.size() + static_cast<std::size_t>(v)];
-    if (known >= 0) return known == 1;
-    if (!has_box[v]) {
-      box[v] = M::box(lt.pts[v]);
-      has_box[v] = 1;
-    }
-    const Tri& u = soup.triangles[partners[q]];
-    int side[3];
-    bool inside = true;
-    for (int e = 0; e < 3 && inside; ++e) {
-      side[e] = M::side_bounded(V[u[e]], V[u[(e + 1) % 3]], box[v], plane);
-      inside = side[e] == tritri::kUndecided || partner_sign[q] * side[e] >= 0;
-    }
-    for (int e = 0; e < 3 && inside; ++e)
-      if (side[e] == tritri::kUndecided)
-        inside = partner_sign[q] * M::side_of_line(g.points[u[e]], g.points[u[(e + 1) % 3]], lt.pts[v], plane,
-                                                &g.points[u[(e + 2) % 3]]) >=
-                 0;
-    known = inside ? 1 : 0;
-    return inside;
-  };
+  const std::vector<std::array<int, 2>> covered = partner_covers<M>(soup, g, t, plane, lt, chain, local_of);
   std::map<std::vector<int>, int> cover_index;
-  for (const LocalTriangle& T : lt.tris) {
-    std::vector<int> cover;
-    for (std::size_t q = 0; q < partners.size(); ++q) {
-      bool inside = true;
-      for (int k = 0; k < 3 && inside; ++k) inside = in_closed_partner(q, T.v[k]);
-      if (inside) cover.push_back(partners[q]);
-    }
+  std::vector<int> cover;
+  for (std::size_t T = 0, i = 0; T < lt.tris.size(); ++T) {
+    cover.clear();
+    for (; i < covered.size() && covered[i][0] == static_cast<int>(T); ++i) cover.push_back(partners[covered[i][1]]);
     if (!cover.empty() && cover.front() < t) continue;  // emitted by the smallest covering triangle
-    piece.triangles.push_back({global[T.v[0]], global[T.v[1]], global[T.v[2]]});
+    const LocalTriangle& L = lt.tris[T];
+    piece.triangles.push_back({global[L.v[0]], global[L.v[1]], global[L.v[2]]});
     if (cover.empty()) {
       piece.covered_by.push_back(-1);
     } else {

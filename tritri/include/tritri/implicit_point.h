@@ -277,9 +277,61 @@ inline std::array<double, 3> to_double(const std::array<CGAL::Gmpq, 3>& q) {
   return out;
 }
 
+namespace detail {
+
+// a / b (b != 0) rounded once to the nearest double (ties to even) into `out`, when that
+// is a normal double or zero; false otherwise (subnormal or overflow: the caller rounds
+// through the rational, which handles both). One MPFR division of the exact integers, in
+// MPFR's default exponent range (no underflow or overflow there): no gcd of the large
+// integers, which reducing the fraction x / w would take. A quotient rounded to 53 bits
+// at or above 2^-1022 is also the double format's rounding: just below 2^-1022 the
+// subnormals have the same spacing as the normals just above.
+inline bool quotient_to_normal_double(mpz_srcptr a, mpz_srcptr b, double& out) {
+  if (mpz_sgn(a) == 0) {
+    out = 0.0;
+    return true;
+  }
+  auto exact = [](mpfr_t r, mpz_srcptr z) {
+    mpfr_init2(r, std::max<mpfr_prec_t>(static_cast<mpfr_prec_t>(mpz_sizeinbase(z, 2)), MPFR_PREC_MIN));
+    mpfr_set_z(r, z, MPFR_RNDN);  // exact: the precision holds every bit
+  };
+  mpfr_t A, B, q;
+  exact(A, a);
+  exact(B, b);
+  mpfr_init2(q, 53);
+  mpfr_div(q, A, B, MPFR_RNDN);
+  const mpfr_exp_t e = mpfr_get_exp(q);  // q = m 2^e, 1/2 <= |m| < 1
+  const bool normal = e >= -1021 && e <= 1024;
+  if (normal) out = mpfr_get_d(q, MPFR_RNDN);
+  mpfr_clear(A);
+  mpfr_clear(B);
+  mpfr_clear(q);
+  return normal;
+}
+
+}  // namespace detail
+
 inline std::array<double, 3> to_double(const ImplicitPoint& p) {
   if (p.is_explicit()) return p.approx();
-  return to_double(to_exact(p));
+  const auto& h = p.exact_homogeneous();
+  // x / w = (xn wd) / (xd wn), the Mpzf values exported as fractions with power-of-two
+  // denominators.
+  const CGAL::Gmpq w(h.w);
+  std::array<double, 3> out;
+  bool done = true;
+  mpz_t a, b;
+  mpz_init(a);
+  mpz_init(b);
+  const CGAL::Mpzf* coordinate[3] = {&h.x, &h.y, &h.z};
+  for (int k = 0; k < 3 && done; ++k) {
+    const CGAL::Gmpq x(*coordinate[k]);
+    mpz_mul(a, mpq_numref(x.mpq()), mpq_denref(w.mpq()));
+    mpz_mul(b, mpq_denref(x.mpq()), mpq_numref(w.mpq()));
+    done = detail::quotient_to_normal_double(a, b, out[k]);
+  }
+  mpz_clear(a);
+  mpz_clear(b);
+  return done ? out : to_double(to_exact(p));
 }
 
 }  // namespace tritri
