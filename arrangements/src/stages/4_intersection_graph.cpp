@@ -13,15 +13,10 @@
 #include "models/double_model.h"
 #include "models/exact_model.h"
 #include "stages/4_share_coplanar.h"
+#include "support/sort_unique.h"
 
 namespace arrangements {
 namespace {
-
-template <class T>
-void sort_unique(std::vector<T>& v) {
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-}
 
 // The vectors of `parts` one after the other in `out` (each part freed once copied).
 template <class T>

@@ -13,15 +13,10 @@
 #include "models/double_model.h"
 #include "models/exact_model.h"
 #include "stages/3_pair_intersection.h"
+#include "support/sort_unique.h"
 
 namespace arrangements {
 namespace {
-
-template <class T>
-void sort_unique(std::vector<T>& v) {
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-}
 
 // Where point x (in t's plane) lies in closed triangle t, which has orientation
 // `orientation` != 0 in `plane`. A vertex of t is recognised by its id; a point at a
