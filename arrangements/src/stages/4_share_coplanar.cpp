@@ -50,9 +50,14 @@ struct Additions {
   std::vector<std::array<int, 2>> segments;
 };
 
+// Edges with more points than this are searched for their run inside a triangle; shorter
+// ones are visited whole (cheaper than the 6 exact signs at their ends).
+constexpr std::size_t kSearchFrom = 16;
+
 // along[e]: the points of edge e in their order from its first vertex g.edges[e][0] to its
 // second (M::compare is an exact order, monotone along any line), for the edges of
-// triangles that have coplanar partners.
+// triangles that have coplanar partners with more than kSearchFrom points (empty for the
+// others).
 template <class M>
 std::vector<std::vector<int>> points_along_edges(const std::vector<Tri>& F,
                                                  const BasicIntersectionGraph<typename M::Point>& g) {
@@ -62,7 +67,7 @@ std::vector<std::vector<int>> points_along_edges(const std::vector<Tri>& F,
       for (int k = 0; k < 3; ++k) wanted[g.triangle_edges[t][k]] = 1;
   std::vector<std::vector<int>> along(g.edges.size());
   tbb::parallel_for(std::size_t{0}, g.edges.size(), [&](std::size_t e) {
-    if (!wanted[e] || g.edge_points[e].empty()) return;
+    if (!wanted[e] || g.edge_points[e].size() <= kSearchFrom) return;
     std::vector<std::pair<typename M::Key, int>> keyed;
     keyed.reserve(g.edge_points[e].size());
     for (int x : g.edge_points[e]) keyed.emplace_back(M::key(g.points[x]), x);
@@ -157,7 +162,7 @@ void share_coplanar(const std::vector<typename M::Vertex>& V, const std::vector<
       for (int x : g.triangle_points[u]) visit(x, true, qi);
       for (int k = 0; k < 3; ++k) {
         const int e = g.triangle_edges[u][k];
-        const std::vector<int>& pts = along[e];
+        const std::vector<int>& pts = g.edge_points[e].size() > kSearchFrom ? along[e] : g.edge_points[e];
         if (pts.empty()) continue;
         // (An edge two partners share is searched for both: the segment look-up below
         // goes by partner.)
@@ -165,7 +170,8 @@ void share_coplanar(const std::vector<typename M::Vertex>& V, const std::vector<
         // function along the edge, so its sign changes at most once between the edge's
         // ends; a binary search finds where.
         std::size_t first = 0, last = pts.size();
-        for (int l = 0; l < 3 && first < last; ++l) {
+        // A short list is simply visited whole (its points outside t are located as such).
+        for (int l = 0; l < 3 && first < last && pts.size() > kSearchFrom; ++l) {
           const int s0 = vertex_side(l, g.edges[e][0]), s1 = vertex_side(l, g.edges[e][1]);
           if (s0 >= 0 && s1 >= 0) continue;
           if (s0 < 0 && s1 < 0) {

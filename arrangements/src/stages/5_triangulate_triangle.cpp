@@ -89,6 +89,8 @@ std::vector<int> spatial_order(const local::LocalTriangulation<M>& lt, const std
 // Cost: O(log k) predicates per partner and edge, plus the covered triangles and their
 // neighbours, not one test per partner and triangle (two coplanar fans of n long thin
 // triangles: O(n) partners and regions in every triangle, cubic in all).
+constexpr std::size_t kSearchFrom = 16;  // longer edges are searched, shorter ones scanned
+constexpr std::size_t kDirectUpTo = 256;  // (local triangles) x (partners) tested pair by pair
 template <class M>
 std::vector<std::array<int, 2>> partner_covers(const BasicTriangleSoup<typename M::Vertex>& soup,
                                                const BasicIntersectionGraph<typename M::Point>& g, int t,
@@ -101,12 +103,16 @@ std::vector<std::array<int, 2>> partner_covers(const BasicTriangleSoup<typename 
   const auto& V = soup.vertices;
   const Tri& tri = soup.triangles[t];
   const std::size_t nv = lt.pts.size(), nt = lt.tris.size();
-  // Triangles around each vertex (CSR).
-  std::vector<int> first(nv + 1, 0), around(3 * nt);
-  for (const LocalTriangle& T : lt.tris)
-    for (int k = 0; k < 3; ++k) ++first[T.v[k] + 1];
-  for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
-  {
+  // Few partners and triangles: each pair tested directly (no seeds, no flood).
+  const bool direct = nt * partners.size() <= kDirectUpTo;
+  // Triangles around each vertex (CSR), for the seeds.
+  std::vector<int> first, around;
+  if (!direct) {
+    first.assign(nv + 1, 0);
+    around.resize(3 * nt);
+    for (const LocalTriangle& T : lt.tris)
+      for (int k = 0; k < 3; ++k) ++first[T.v[k] + 1];
+    for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
     std::vector<int> fill(first.begin(), first.end() - 1);
     for (std::size_t T = 0; T < nt; ++T)
       for (int k = 0; k < 3; ++k) around[fill[lt.tris[T].v[k]]++] = static_cast<int>(T);
@@ -126,6 +132,16 @@ std::vector<std::array<int, 2>> partner_covers(const BasicTriangleSoup<typename 
     const int q = static_cast<int>(qi);
     const Tri& u = soup.triangles[partners[qi]];
     const int sign = tritri::to_int(M::orient2d(V[u[0]], V[u[1]], V[u[2]], plane));
+    Vec3 lo, hi;  // u's bounding box
+    M::bounds(V[u[0]], lo, hi);
+    for (int k = 1; k < 3; ++k) {
+      Vec3 l, h;
+      M::bounds(V[u[k]], l, h);
+      for (int c = 0; c < 3; ++c) {
+        lo[c] = std::min(lo[c], l[c]);
+        hi[c] = std::max(hi[c], h[c]);
+      }
+    }
     // The side of u's edge line e that local vertex v lies on, positive inside u.
     auto side = [&](int e, int v) {
       int s = M::side_bounded(V[u[e]], V[u[(e + 1) % 3]], box_of(v), plane);
@@ -136,11 +152,20 @@ std::vector<std::array<int, 2>> partner_covers(const BasicTriangleSoup<typename 
     auto in_partner = [&](int v) {  // v in u's closed triangle, once per (q, v)
       if (tested_for[v] == q) return inside[v] == 1;
       tested_for[v] = q;
+      const typename M::Box& b = box_of(v);
       bool in = true;
+      for (int c = 0; c < 3 && in; ++c) in = b[c].hi >= lo[c] && b[c].lo <= hi[c];  // boxes apart: outside
       for (int e = 0; e < 3 && in; ++e) in = side(e, v) >= 0;
       inside[v] = in;
       return in;
     };
+    if (direct) {
+      for (std::size_t T = 0; T < nt; ++T) {
+        const LocalTriangle& L = lt.tris[T];
+        if (in_partner(L.v[0]) && in_partner(L.v[1]) && in_partner(L.v[2])) covered.push_back({static_cast<int>(T), q});
+      }
+      continue;
+    }
     // A vertex in closed u: one of u's corners, or a vertex of a run along t's edges.
     int seed_vertex = -1;
     for (int k = 0; k < 3 && seed_vertex < 0; ++k) {
@@ -149,6 +174,11 @@ std::vector<std::array<int, 2>> partner_covers(const BasicTriangleSoup<typename 
     }
     for (int f = 0; f < 3 && seed_vertex < 0; ++f) {
       const std::vector<int>& c = chain[f];
+      if (c.size() <= kSearchFrom) {  // a short edge: its vertices in turn
+        for (std::size_t i = 0; i < c.size() && seed_vertex < 0; ++i)
+          if (in_partner(c[i])) seed_vertex = c[i];
+        continue;
+      }
       std::size_t lo = 0, hi = c.size();
       for (int e = 0; e < 3 && lo < hi; ++e) {
         auto corner_side = [&](int k) {
