@@ -13,6 +13,7 @@
 #include "models/double_model.h"
 #include "models/exact_model.h"
 #include "stages/3_pair_intersection.h"
+#include "support/bounding_box.h"
 #include "support/sort_unique.h"
 
 namespace arrangements {
@@ -118,16 +119,8 @@ void share_coplanar(const std::vector<typename M::Vertex>& V, const std::vector<
     const tritri::Plane plane = proj.first;
     const int orientation = proj.second;
     Additions& a = add[t];
-    Vec3 lo, hi;
-    M::bounds(V[tri[0]], lo, hi);
-    for (int k = 1; k < 3; ++k) {
-      Vec3 l, h;
-      M::bounds(V[tri[k]], l, h);
-      for (int c = 0; c < 3; ++c) {
-        lo[c] = std::min(lo[c], l[c]);
-        hi[c] = std::max(hi[c], h[c]);
-      }
-    }
+    const BoundingBox tbox = triangle_bounds<M>(V, tri);
+    const Vec3 &lo = tbox.lo, &hi = tbox.hi;
     Scratch& sc = scratch.local();
     if (sc.seen.empty()) sc.resize(g.points.size());
     sc.ids.clear();

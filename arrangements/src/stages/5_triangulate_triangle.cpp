@@ -12,6 +12,7 @@
 #include "models/double_model.h"
 #include "models/exact_model.h"
 #include "stages/5_local_triangulation.h"
+#include "support/bounding_box.h"
 
 namespace arrangements {
 namespace {
@@ -132,16 +133,8 @@ std::vector<std::array<int, 2>> partner_covers(const BasicTriangleSoup<typename 
     const int q = static_cast<int>(qi);
     const Tri& u = soup.triangles[partners[qi]];
     const int sign = tritri::to_int(M::orient2d(V[u[0]], V[u[1]], V[u[2]], plane));
-    Vec3 lo, hi;  // u's bounding box
-    M::bounds(V[u[0]], lo, hi);
-    for (int k = 1; k < 3; ++k) {
-      Vec3 l, h;
-      M::bounds(V[u[k]], l, h);
-      for (int c = 0; c < 3; ++c) {
-        lo[c] = std::min(lo[c], l[c]);
-        hi[c] = std::max(hi[c], h[c]);
-      }
-    }
+    const BoundingBox ubox = triangle_bounds<M>(V, u);
+    const Vec3 &lo = ubox.lo, &hi = ubox.hi;
     // The side of u's edge line e that local vertex v lies on, positive inside u.
     auto side = [&](int e, int v) {
       int s = M::side_bounded(V[u[e]], V[u[(e + 1) % 3]], box_of(v), plane);

@@ -1,6 +1,7 @@
 // BoundingBox: the axis-aligned box of double points, its centre and its diagonal. The one
 // definition that round_safe's move limit (rounding/round_mesh.cpp), the generators
-// (mesh_generators.cpp) and the tests measure models and place copies with. Exact for the
+// (mesh_generators.cpp) and the tests measure models and place copies with, and that
+// coplanar sharing and covers (stages 4 and 5) reject far points with. Exact for the
 // box itself (min and max); centre and diagonal are rounded doubles, measures, never
 // decisions.
 #pragma once
@@ -37,6 +38,20 @@ struct BoundingBox {
 inline BoundingBox bounding_box(const std::vector<Vec3>& points) {
   BoundingBox b;
   for (const Vec3& p : points) b.add(p);
+  return b;
+}
+
+// A box that certainly holds triangle t of V in point model M (models/point_model.h): the
+// box of its corners' M::bounds (exact for doubles, conservative for rationals). O(1).
+template <class M>
+BoundingBox triangle_bounds(const std::vector<typename M::Vertex>& V, const Tri& t) {
+  BoundingBox b;
+  for (int k = 0; k < 3; ++k) {
+    Vec3 lo, hi;
+    M::bounds(V[t[k]], lo, hi);
+    b.add(lo);
+    b.add(hi);
+  }
   return b;
 }
 
