@@ -13,18 +13,15 @@
 // work (fans of long thin triangles, fans, sheets, three stacked layers) and its
 // degenerate cases (collinear overlapping edges, T-junctions, shared corners, touching,
 // nesting, near-common points), with triangles crossing the plane, each placed in five
-// planes, scaled by 2^k and moved (all exact in doubles); DoubleModel, and ExactModel on
-// the smaller scenes.
+// planes, scaled by 2^k and moved (all exact in doubles; support/coplanar_scenes.h);
+// DoubleModel, and ExactModel on the smaller scenes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <iterator>
-#include <numbers>
 #include <random>
 #include <string>
 #include <utility>
@@ -37,250 +34,50 @@
 #include "stages/3_classify_pairs.h"
 #include "stages/4_intersection_graph.h"
 #include "stages/4_share_coplanar.h"
+#include "support/coplanar_scenes.h"
 #include "support/exact_oracle.h"
 #include "support/test_scale.h"
 
 namespace {
 
 using namespace arrangements;
-using tritri_test::Q;
-using tritri_test::Q3;
-using tritri_test::ZPoint;
+using namespace tritri_test::coplanar;
 
-// ---------------------------------------------------------------------------------------
-// Scenes, in local coordinates (x, y, w): the common plane is w = 0. Every coordinate is
-// a multiple of 2^-28 below 8 in magnitude, so that the plane maps, the offset by 2^20
-// and the scalings by 2^k of place() are exact in doubles (coplanarity survives them).
-
-constexpr int kGridBits = 28;
-double snap(double v) { return std::ldexp(std::nearbyint(std::ldexp(v, kGridBits)), -kGridBits); }
-
-using P2 = std::array<double, 2>;
-
-struct Builder {
-  TriangleSoup soup;
-  Builder() { soup.label_sets = {{0}}; }
-  int vertex(double x, double y, double w = 0) {
-    soup.vertices.push_back({snap(x), snap(y), snap(w)});
-    return static_cast<int>(soup.vertices.size()) - 1;
-  }
-  int vertex(const P2& p) { return vertex(p[0], p[1]); }
-  void triangle(int a, int b, int c) {
-    soup.triangles.push_back({a, b, c});
-    soup.label_set.push_back(0);
-    soup.source.push_back(static_cast<std::int64_t>(soup.triangles.size()) - 1);
-  }
-  // Separate vertices for each triangle: preprocess merges equal positions into one id.
-  void triangle(const P2& a, const P2& b, const P2& c) { triangle(vertex(a), vertex(b), vertex(c)); }
-};
-
-P2 turn(const P2& p, double degrees, const P2& shift) {
-  const double r = degrees * std::numbers::pi / 180, c = std::cos(r), s = std::sin(r);
-  return {c * p[0] - s * p[1] + shift[0], s * p[0] + c * p[1] + shift[1]};
+// The crossing triangles' corners: uniform in [-2.5, 2.5]^2, y drawn before x (the order
+// in which g++ evaluated the arguments when the scenes were written).
+P2 crossing_corner(std::mt19937_64& rng) {
+  const double y = -2.5 + 5 * unit(rng);
+  return {-2.5 + 5 * unit(rng), y};
 }
 
-std::vector<P2> rim(const P2& centre, double radius, int n, double degrees) {
-  std::vector<P2> out;
+// 10 thin wedges whose edges nearly meet in two points (write_wedges).
+Builder wedges() {
+  Builder b;
+  const int n = 10;
   for (int i = 0; i < n; ++i) {
-    const double a = 2 * std::numbers::pi * i / n;
-    out.push_back(turn({radius * std::cos(a), radius * std::sin(a)}, degrees, centre));
+    const double y = -1 + 2 * (i + 0.5) / n, d = 0.5 / n;
+    b.triangle({-1, y}, {1, -y + d}, {1, -y - d});
   }
-  return out;
+  return b;
 }
-
-// A polygon's cap as a fan from its rim vertex 0 (QuickCSG's TwoCylinders): long thin
-// triangles, each crossed by O(n) of the other fan's.
-void strip_fan(Builder& b, const std::vector<P2>& r) {
-  std::vector<int> id;
-  for (const P2& p : r) id.push_back(b.vertex(p));
-  for (std::size_t i = 1; i + 1 < r.size(); ++i) b.triangle(id[0], id[i + 1], id[i]);
-}
-
-void apex_fan(Builder& b, const P2& apex, const std::vector<P2>& r) {
-  const int a = b.vertex(apex);
-  std::vector<int> id;
-  for (const P2& p : r) id.push_back(b.vertex(p));
-  for (std::size_t i = 0; i < r.size(); ++i) b.triangle(a, id[i], id[(i + 1) % r.size()]);
-}
-
-// An m x m grid of side `side` centred at the origin, turned and moved; two triangles per
-// cell, split along either diagonal.
-void sheet(Builder& b, int m, double side, double degrees, const P2& shift, bool other_diagonal = false) {
-  const int first = static_cast<int>(b.soup.vertices.size());
-  for (int j = 0; j <= m; ++j)
-    for (int i = 0; i <= m; ++i) b.vertex(turn({-side / 2 + side * i / m, -side / 2 + side * j / m}, degrees, shift));
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) {
-      const int a = first + j * (m + 1) + i, c = a + m + 2;
-      if (other_diagonal) {
-        b.triangle(a, a + 1, a + m + 1);
-        b.triangle(a + 1, c, a + m + 1);
-      } else {
-        b.triangle(a, a + 1, c);
-        b.triangle(a, c, a + m + 1);
-      }
-    }
-}
-
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return lo + (hi - lo) * std::ldexp(static_cast<double>(rng() >> 11), -53);  // (platform independent)
-}
-
-// Triangles through the plane, so that coplanar triangles also hold points and segments
-// of non-coplanar pairs: a generic one, one with an edge in the plane, one with a corner
-// in it, and another generic one.
-void crossing(Builder& b, std::mt19937_64& rng, double half) {
-  const double w[4][3] = {{-0.75, 0.5, 0.625}, {0, 0, 0.5}, {0, -0.5, 0.5}, {0.375, -0.25, -0.5}};
-  for (const auto& ws : w) {
-    int id[3];
-    for (int k = 0; k < 3; ++k) id[k] = b.vertex(uniform(rng, -half, half), uniform(rng, -half, half), ws[k]);
-    b.triangle(id[0], id[1], id[2]);
-  }
-}
-
-// A vertical triangle over the segment (p, q): it cuts the plane along the middle half
-// of (p, q), a constraint placed by hand.
-void wall(Builder& b, const P2& p, const P2& q) {
-  b.triangle(b.vertex(p[0], p[1], -1), b.vertex(q[0], q[1], -1), b.vertex((p[0] + q[0]) / 2, (p[1] + q[1]) / 2, 1));
-}
-
-struct Scene {
-  std::string name;
-  TriangleSoup soup;
-  bool large = false;  // fewer placements
-};
 
 std::vector<Scene> scenes() {
-  std::vector<Scene> out;
-  std::mt19937_64 rng(tritri_test::seed_for(4417));
-  auto add = [&](const std::string& name, Builder& b, bool large = false) {
-    crossing(b, rng, 2.5);
-    out.push_back({name, std::move(b.soup), large});
-  };
-  // 1. Strips: two rim fans, the second turned by 12 degrees and moved.
-  for (int n : {10, 30, 60}) {
-    if (n == 60 && tritri_test::scaled_down()) continue;
-    Builder b;
-    strip_fan(b, rim({0, 0}, 4, n, 0));
-    strip_fan(b, rim({1.3125, 1.3125}, 4, n, 12));
-    add("strips n=" + std::to_string(n), b, n == 60);
-  }
-  // 2. Fans around their own centres (spokes cross) and around one shared apex.
-  {
-    Builder b;
-    apex_fan(b, {0, 0}, rim({0, 0}, 4, 24, 0));
-    apex_fan(b, {1.3125, 1.3125}, rim({1.3125, 1.3125}, 4, 24, 12));
-    add("fans, own apexes", b);
-    Builder c;
-    apex_fan(c, {0.625, 0.625}, rim({0, 0}, 4, 24, 0));
-    apex_fan(c, {0.625, 0.625}, rim({1.3125, 1.3125}, 4, 24, 12));
-    add("fans, shared apex", c);
-  }
-  // 3. Sheets: two grids, one turned and moved; three stacked layers (three-way overlaps).
-  {
-    Builder b;
-    sheet(b, 8, 6, 0, {0, 0});
-    sheet(b, 8, 6, 12, {0.37 * 0.75, 0.21 * 0.75});
-    add("sheets", b, true);
-    Builder c;
-    sheet(c, 6, 6, 0, {0, 0});
-    sheet(c, 6, 6, 12, {0.3, 0.2});
-    sheet(c, 6, 6, -7, {-0.2, 0.35}, true);
-    add("three layers", c, true);
-  }
-  // 4. Degenerate contacts.
-  {
-    Builder b;
-    b.triangle({0, 0}, {4, 0}, {2, 3});           // t
-    b.triangle({1, 0}, {6, 0}, {3, 2});           // overlaps t, bottom edges collinear on [1, 4]
-    b.triangle({-1, 0}, {2, 0}, {1, -2});         // touches t along [0, 2] only
-    b.triangle({4, 0}, {5, -1}, {6, -0.5});       // shares t's corner (4, 0) only
-    b.triangle({3, 1.5}, {5, 1.5}, {4, 3.5});     // a corner on t's right edge, else outside
-    b.triangle({0.5, 0.75}, {1.5, 2.25}, {-1, 2});  // along t's left edge, outside t
-    b.triangle({0.5, 0.75}, {1.5, 2.25}, {2, 1});   // along t's left edge, inside t
-    // Constraints from the common part of the bottom edges into t, ending on either side.
-    wall(b, {2.5, -2}, {2.5, 4});
-    wall(b, {1.5, -2}, {3.5, 4});
-    wall(b, {3.5, -2}, {1.5, 4});
-    add("collinear edges, touching", b);
-  }
-  {
-    Builder b;  // T-junctions: the second grid's corners on the first's edges
-    sheet(b, 6, 6, 0, {0, 0});
-    sheet(b, 6, 6, 0, {0.5, 0});
-    sheet(b, 6, 6, 0, {0.25, 0.5}, true);
-    add("T-junctions", b, true);
-  }
-  {
-    Builder b;  // the same corners split along the other diagonal; coarser cells through them
-    sheet(b, 4, 4, 0, {0, 0});
-    sheet(b, 4, 4, 0, {0, 0}, true);
-    sheet(b, 2, 4, 0, {0, 0}, true);
-    b.triangle({-2, -2}, {-1, -2}, {-1, -1});  // identical to a triangle of the first grid
-    add("shared corners", b);
-  }
-  {
-    Builder b;
-    b.triangle({-4, -4}, {4, -4}, {0, 4});
-    b.triangle({-1, -1}, {1, -1}, {0, 1});          // inside
-    b.triangle({-0.5, -0.75}, {0.5, -0.75}, {0, 0.5});  // inside that one
-    b.triangle({-1, -4}, {1, -4}, {0, -3});         // inside, an edge along the big one's
-    b.triangle({0, -4}, {1, -2}, {-1, -2});         // inside, a corner on the big one's edge
-    b.triangle({-1, -1}, {1, -1}, {0, -2});         // shares an edge with the second
-    add("nested", b);
-  }
-  {
-    Builder b;  // 10 thin wedges whose edges nearly meet in two points (write_wedges)
-    const int n = 10;
-    for (int i = 0; i < n; ++i) {
-      const double y = -1 + 2 * (i + 0.5) / n, d = 0.5 / n;
-      b.triangle({-1, y}, {1, -y + d}, {1, -y - d});
-    }
-    add("wedges", b);
-  }
-  for (int s = 0; s < 2; ++s) {
-    Builder b;  // corners on a coarse lattice: collinear edges, T-junctions, shared corners
-    for (int k = 0; k < 40; ++k) {
-      P2 p[3];
-      for (P2& q : p) q = {0.5 * static_cast<double>(rng() % 9) - 2, 0.5 * static_cast<double>(rng() % 9) - 2};
-      b.triangle(p[0], p[1], p[2]);
-    }
-    add("lattice " + std::to_string(s), b, true);
-  }
-  return out;
-}
-
-// Placement: the plane w = 0 mapped to z = 0, y = 0, x = 0, z = x or z = x + y, moved by
-// 2^20 along (1, 1, 1) or not, then scaled by 2^k.
-struct Placement {
-  int plane;
-  int k;
-  bool offset;
-  std::string name() const {
-    static const char* planes[] = {"z=0", "y=0", "x=0", "z=x", "z=x+y"};
-    return std::string(planes[plane]) + " 2^" + std::to_string(k) + (offset ? " +2^20" : "");
-  }
-};
-
-TriangleSoup place(TriangleSoup s, const Placement& p) {
-  for (Vec3& v : s.vertices) {
-    const double x = v[0], y = v[1], w = v[2];
-    const Vec3 m = p.plane == 0 ? Vec3{x, y, w}
-                   : p.plane == 1 ? Vec3{x, w, y}
-                   : p.plane == 2 ? Vec3{w, x, y}
-                   : p.plane == 3 ? Vec3{x, y, x + w}
-                                  : Vec3{x, y, x + y + w};
-    const Q3 want = p.plane == 3   ? Q3{Q(x), Q(y), Q(x) + Q(w)}
-                    : p.plane == 4 ? Q3{Q(x), Q(y), Q(x) + Q(y) + Q(w)}
-                                   : tritri_test::exact(m);
-    const Q scale = p.k >= 0 ? Q(std::ldexp(1.0, p.k)) : Q(1) / Q(std::ldexp(1.0, -p.k));
-    for (int c = 0; c < 3; ++c) {
-      v[c] = std::ldexp(m[c] + (p.offset ? 0x1p20 : 0.0), p.k);
-      // Exact, or the scene would not be coplanar any more.
-      EXPECT_EQ(Q(v[c]), (want[c] + (p.offset ? Q(1 << 20) : Q(0))) * scale);
-    }
-  }
-  return s;
+  SceneList list{std::mt19937_64(tritri_test::seed_for(4417)), crossing_corner, {}};
+  for (int n : {10, 30, 60})
+    if (n < 60 || !tritri_test::scaled_down()) list.add("strips n=" + std::to_string(n), strips(n), n == 60);
+  list.add("fans, own apexes", fans(false, Apex::kFirst));
+  list.add("fans, shared apex", fans(true, Apex::kFirst));
+  list.add("sheets", two_sheets({0.37 * 0.75, 0.21 * 0.75}), true);
+  list.add("three layers", three_sheets(), true);
+  list.add("collinear edges, touching", contacts(false));
+  list.add("T-junctions", t_junctions(), true);
+  Builder corners = shared_corners();
+  corners.triangle({-2, -2}, {-1, -2}, {-1, -1});  // identical to a triangle of the first grid
+  list.add("shared corners", std::move(corners));
+  list.add("nested", nested());
+  list.add("wedges", wedges());
+  for (int s = 0; s < 2; ++s) list.add("lattice " + std::to_string(s), lattice(list.rng, false), true);
+  return std::move(list.scenes);
 }
 
 // z = 0 first, then every plane at every scale, moved or not in turn; large scenes (and
@@ -303,42 +100,20 @@ std::vector<Placement> placements(std::size_t scene, bool large) {
 // The reference.
 
 // Closed triangle (A, B, C) in exact integers: in the projection dropping the axis of the
-// normal's largest component (where the triangle is not degenerate), side k of a point X
-// (over its common denominator D) is the sign of a_k X_i + b_k X_j + c_k D, positive inside
-// (orient2d of edge k = (corner k, corner k + 1) and X, times the triangle's orientation).
+// normal's largest component, side k of a point X is the sign of edge line k at X,
+// positive inside (orient2d of edge k = (corner k, corner k + 1) and X, times the
+// triangle's orientation).
 struct ExactTriangle {
   static constexpr int kOutside = -1, kCorner = 4, kInterior = 3;  // else: strictly inside edge k
-  int i = 0, j = 0;
-  std::array<std::array<mpz_class, 3>, 3> line;
+  Projection pr;
+  EdgeLines lines;
 
-  ExactTriangle(const Q3& A, const Q3& B, const Q3& C) {
-    const Q3 n = tritri_test::normal(A, B, C);
-    int axis = 0;
-    for (int c = 1; c < 3; ++c)
-      if (abs(n[c]) > abs(n[axis])) axis = c;
-    i = (axis + 1) % 3;
-    j = (axis + 2) % 3;
-    const int orientation = sgn(n[axis]);
-    EXPECT_NE(orientation, 0) << "a degenerate triangle after preprocess";
-    const Q3* corner[3] = {&A, &B, &C};
-    for (int k = 0; k < 3; ++k) {
-      const Q3 &p = *corner[k], &q = *corner[(k + 1) % 3];
-      // (q_i - p_i)(X_j - p_j) - (q_j - p_j)(X_i - p_i) = a X_i + b X_j + c
-      Q coef[3];
-      coef[0] = -(q[j] - p[j]);
-      coef[1] = q[i] - p[i];
-      coef[2] = -(coef[0] * p[i] + coef[1] * p[j]);
-      mpz_class d = 1;
-      for (const Q& c : coef) mpz_lcm(d.get_mpz_t(), d.get_mpz_t(), c.get_den_mpz_t());
-      for (int c = 0; c < 3; ++c) line[k][c] = orientation * coef[c].get_num() * (d / coef[c].get_den());
-    }
-  }
+  ExactTriangle(const Q3& A, const Q3& B, const Q3& C) : pr(projection_of(A, B, C)), lines(edge_lines(A, B, C, pr)) {}
 
   int locate(const ZPoint& x) const {
     int zeros = 0, zero = -1;
     for (int k = 0; k < 3; ++k) {
-      const mpz_class v = line[k][0] * x.num[i] + line[k][1] * x.num[j] + line[k][2] * x.den;
-      const int s = sgn(v);
+      const int s = sgn(lines.at(k, x, pr));
       if (s < 0) return kOutside;
       if (s == 0) ++zeros, zero = k;
     }
@@ -495,10 +270,6 @@ Counts check_share(const std::vector<typename M::Vertex>& V, const std::vector<T
           total(want.triangle_segments) - total(before.triangle_segments)};
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // Every fourth record dropped: a graph as valid for the step as a full one (each
 // triangle's lists are consistent), where t misses points that its partners hold on t's
 // edges. With every pair classified t's own pairs find those, so only here do the edge
@@ -570,27 +341,18 @@ TEST(ShareCoplanar, DoubleModelMatchesBruteForce) {
 // scaled by 2^-60. Its additions are those of the double path (the same geometry).
 TEST(ShareCoplanar, ExactModelMatchesBruteForce) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<Scene> all = scenes();
   std::size_t runs = 0;
-  for (std::size_t s = 0; s < all.size(); ++s) {
-    if (all[s].large) continue;
-    for (const Placement& p : {Placement{0, 0, false}, Placement{4, -60, true}}) {
-      if (tritri_test::scaled_down() && p.plane != 0) continue;
-      const std::string what = all[s].name + ", " + p.name() + " (exact)";
-      const TriangleSoup input = place(all[s].soup, p);
-      PreprocessStats stats;
-      const auto soup = preprocess<ExactModel>(to_exact(input), PreprocessOptions{}, stats);
-      const auto& V = soup.vertices;
-      const auto& F = soup.triangles;
-      const auto pairs = detect_pairs<ExactModel>(V, F, 0).pairs;
-      const auto c = check_both<ExactModel>(V, F, classify_pairs<ExactModel>(V, F, pairs, Classifier::Native), what);
-      ++runs;
-      EXPECT_GT(c[0].added(), 0u) << what;
-      const auto d = run_double(input, Classifier::Native, what);
-      EXPECT_EQ(str(c[0]), str(d[0])) << what;
-      EXPECT_EQ(str(c[1]), str(d[1])) << what << " (thinned)";
-    }
-  }
+  for_each_exact_run(scenes(), [&](const std::string& what, const TriangleSoup& input, const auto& soup) {
+    const auto& V = soup.vertices;
+    const auto& F = soup.triangles;
+    const auto pairs = detect_pairs<ExactModel>(V, F, 0).pairs;
+    const auto c = check_both<ExactModel>(V, F, classify_pairs<ExactModel>(V, F, pairs, Classifier::Native), what);
+    ++runs;
+    EXPECT_GT(c[0].added(), 0u) << what;
+    const auto d = run_double(input, Classifier::Native, what);
+    EXPECT_EQ(str(c[0]), str(d[0])) << what;
+    EXPECT_EQ(str(c[1]), str(d[1])) << what << " (thinned)";
+  });
   EXPECT_GT(runs, 0u);
   std::printf("%zu exact placements; %.2f s\n", runs, seconds_since(start));
 }
