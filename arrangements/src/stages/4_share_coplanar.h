@@ -21,7 +21,9 @@
 // predicates per edge plus one location per point found, not one per point of u: two
 // coplanar fans of long thin triangles (QuickCSG's TwoCylinders and finer) have O(n)
 // partners per triangle, each with O(n) points on its edges, and listing them all was
-// cubic. u's segments are looked up from the points found (they are sorted by first end).
+// cubic. Edges with at most 16 points are visited whole instead (cheaper than the exact
+// signs at their ends). u's segments are looked up from the points found (they are sorted
+// by first end).
 // Memory: the sorted copies of the partners' edge lists and per-thread stamps.
 #pragma once
 
