@@ -4,7 +4,9 @@
 // generated families of support/orient_cases.h (orient2d also on 3D points projected to
 // XY, YZ and ZX, the dropped coordinate junk). Prints per family how many cases are exact
 // zeros, how many plain double evaluation gets wrong, and which stage the documented
-// thresholds of double_predicates.h send them to.
+// thresholds of double_predicates.h send them to. The two exact stages for coordinates
+// outside the double expansions' range (long double expansions, GMP integers) are also
+// called one by one against the oracle.
 //
 // Case counts scale with the environment variable TRITRI_TEST_SCALE (default 1.0; the
 // sanitizer CI uses 0.1). At scale 1.0 each predicate sees 1,000,000 generated cases.
@@ -27,7 +29,8 @@ using namespace tritri_test::orient;
 
 // Which stage the documented thresholds of double_predicates.h send a case to; only for
 // the report printed by the tests (uses the header's evaluation order for the filter).
-enum Stage { kTrivial, kFilter, kExpansion, kGmp, kStages };
+// kWide: outside the double expansions' range, long double expansions (x87) or GMP.
+enum Stage { kTrivial, kFilter, kExpansion, kWide, kStages };
 
 template <std::size_t N>
 Stage documented_stage(const Case<N>& p) {
@@ -45,7 +48,7 @@ Stage documented_stage(const Case<N>& p) {
   if (in_range && std::fabs(naive_det(p)) > bound) return kFilter;
   for (const auto& q : p)
     for (double x : q)
-      if (!tritri::detail::expansion_safe(x)) return kGmp;
+      if (!tritri::detail::expansion_safe(x)) return kWide;
   return kExpansion;
 }
 
@@ -61,8 +64,8 @@ struct Tally {
   void print(const std::string& what) const {
     std::printf(
         "[ stats    ] %-28s %8ld cases: exact zero %7ld, naive double wrong %7ld; "
-        "stages (documented thresholds): trivial %ld, filter %ld, expansion %ld, gmp %ld\n",
-        what.c_str(), cases, zero, naive_wrong, stage[kTrivial], stage[kFilter], stage[kExpansion], stage[kGmp]);
+        "stages (documented thresholds): trivial %ld, filter %ld, expansion %ld, wide range %ld\n",
+        what.c_str(), cases, zero, naive_wrong, stage[kTrivial], stage[kFilter], stage[kExpansion], stage[kWide]);
   }
 };
 Tally g_total3, g_total2;
@@ -151,6 +154,38 @@ TEST_P(GeneratedCases, Orient2dMatchesExactRationalSignOnEveryPlane) {
   }
   t.print(std::string("orient2d ") + family_name(plan.family));
   g_total2.add(t);
+}
+
+// The two exact stages for inputs outside the double expansions' range, each called
+// directly (the predicates take one of them per platform): long double expansions and GMP
+// integers, against the oracle on every family (the extreme and scaled ones reach them).
+TEST_P(GeneratedCases, WideRangeStagesMatchExactRationalSign) {
+  const FamilyPlan plan = GetParam();
+  Rng r(orient_seed(300 + static_cast<int>(plan.family)));
+  const long n = tritri_test::scaled_count(plan.count / 4);
+  long wide = 0;
+  int failures = 0;
+  for (long i = 0; i < n && failures < kMaxReportedFailures; ++i) {
+    const Case<3> p3 = generate<3>(plan.family, r);
+    const Case<2> p2 = generate<2>(plan.family, r);
+    double f3[12], f2[6];
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 3; ++k) f3[3 * j + k] = p3[j][k];
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 2; ++k) f2[2 * j + k] = p2[j][k];
+    wide += documented_stage(p3) == kWide;
+    const int want3 = exact_sign(p3), want2 = exact_sign(p2);
+    const int ld3 = tritri::detail::orient3d_long_double(f3), gmp3 = tritri::detail::orient3d_gmp(f3);
+    const int ld2 = tritri::detail::orient2d_long_double(f2), gmp2 = tritri::detail::orient2d_gmp(f2);
+    if (ld3 != want3 || gmp3 != want3 || ld2 != want2 || gmp2 != want2) {
+      ++failures;
+      ADD_FAILURE() << "orient3d" << describe(p3) << ": long double " << ld3 << ", gmp " << gmp3 << ", exact "
+                    << want3 << "; orient2d" << describe(p2) << ": long double " << ld2 << ", gmp " << gmp2
+                    << ", exact " << want2;
+    }
+  }
+  std::printf("[ stats    ] wide-range stages, %-12s %ld cases, %ld of them in the wide range\n",
+              family_name(plan.family), n, wide);
 }
 
 INSTANTIATE_TEST_SUITE_P(Families, GeneratedCases, ::testing::ValuesIn(kPlans),

@@ -14,6 +14,8 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include <tritri/box_pairs.h>
 #include <tritri/direction_slabs.h>
@@ -105,14 +107,25 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
       planes[t] = DoubleModel::plane_cache((*doubles)[F[t][0]], (*doubles)[F[t][1]], (*doubles)[F[t][2]]);
     });
   }
+  // Implicit points: each triangle's source plane by construction, found once (pair_fault
+  // tests the pairs' sides against them).
+  std::vector<tritri::ConstructedPlane> constructed;
+  if constexpr (std::is_same_v<typename K::Point, tritri::ImplicitPoint>) {
+    constructed.resize(F.size());
+    tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
+      constructed[t] = tritri::constructed_plane(P[F[t][0]], P[F[t][1]], P[F[t][2]]);
+    });
+  }
   auto classify_pair = [&](int i, int j) {
     detail::memory_checkpoint();
     if (!planes.empty() && early_out<DoubleModel>(*doubles, F, planes, i, j).settled) return;
     const Tri& a = F[i];
     const Tri& b = F[j];
     tritri::Result r;
-    const PairFault fault =
-        pair_fault<K>(a, {P[a[0]], P[a[1]], P[a[2]]}, b, {P[b[0]], P[b[1]], P[b[2]]}, &r);
+    const std::array<const tritri::ConstructedPlane*, 2> pair_planes{
+        constructed.empty() ? nullptr : &constructed[i], constructed.empty() ? nullptr : &constructed[j]};
+    const PairFault fault = pair_fault<K>(a, {P[a[0]], P[a[1]], P[a[2]]}, b, {P[b[0]], P[b[1]], P[b[2]]}, &r,
+                                          constructed.empty() ? nullptr : &pair_planes);
     switch (fault) {
       case PairFault::none:
       case PairFault::degenerate:  // reported above

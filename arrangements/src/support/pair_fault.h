@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
 
 #include <tritri/classify.h>
+#include <tritri/constructed_plane_sides.h>
 #include <tritri/shared_vertices.h>
 
 #include "arrangements/output_mesh.h"
@@ -25,16 +27,32 @@ enum class PairFault {
 // a, b: the triangles' vertex ids; pa, pb: their corners (kernel K). `result`, when given,
 // receives tritri's classification when one was made. Exact; one classification at most
 // (neighbours that provably meet only in what they share skip it: tritri's sufficient
-// conditions, each proved in shared_vertices.h, in a projection first, then by plane signs).
+// conditions, each proved in shared_vertices.h, in a projection first, then by plane signs;
+// for implicit points, plane signs against the source planes first, constructed_plane_sides.h).
+// `planes`, for implicit points: a's and b's tritri::constructed_plane when the caller
+// found them once per triangle (else they are found here).
 template <class K>
 PairFault pair_fault(const Tri& a, const std::array<typename K::Point, 3>& pa, const Tri& b,
-                     const std::array<typename K::Point, 3>& pb, tritri::Result* result = nullptr) {
+                     const std::array<typename K::Point, 3>& pb, tritri::Result* result = nullptr,
+                     const std::array<const tritri::ConstructedPlane*, 2>* planes = nullptr) {
   int shared = 0;
   for (int x : a) shared += std::count(b.begin(), b.end(), x) > 0;
   if (shared == 3) return PairFault::same_vertices;
-  if (shared > 0 &&
-      (tritri::meet_in_shared_in_projection(K{}, pa, a, pb, b) || tritri::meet_only_in_shared(K{}, pa, a, pb, b)))
+  if constexpr (std::is_same_v<typename K::Point, tritri::ImplicitPoint>) {
+    // Plane signs against the source planes the triangles were built on, not their own
+    // corners (cheaper: three explicit operands), unless both lie on one of them
+    // (coplanar: the tests in a projection decide). Where a triangle has no such plane its
+    // own corners stand in, so meet_only_in_shared would repeat these signs.
+    const tritri::ConstructedPlaneSides sides =
+        planes ? tritri::ConstructedPlaneSides(pa, pb, *(*planes)[0], *(*planes)[1]) : tritri::ConstructedPlaneSides(pa, pb);
+    if (!sides.same_plane() &&
+        (shared == 0 ? tritri::separated_by_plane(sides) : tritri::meet_only_in_shared_by_sides(a, b, sides)))
+      return PairFault::none;
+    if (shared > 0 && tritri::meet_in_shared_in_projection(K{}, pa, a, pb, b)) return PairFault::none;
+  } else if (shared > 0 && (tritri::meet_in_shared_in_projection(K{}, pa, a, pb, b) ||
+                            tritri::meet_only_in_shared(K{}, pa, a, pb, b))) {
     return PairFault::none;
+  }
   if (shared == 0 && tritri::separated_in_projection(K{}, pa, pb)) return PairFault::none;
   const tritri::Result r = tritri::classify<K>(pa[0], pa[1], pa[2], pb[0], pb[1], pb[2]);
   if (result) *result = r;

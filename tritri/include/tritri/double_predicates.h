@@ -5,7 +5,9 @@
 //   2. when the filter cannot decide and every coordinate is 0 or has magnitude in
 //      [2^-280, 2^280]: 128-bit integers if the differences are exact doubles within a
 //      narrow bit window (detail/integer_orient.h), exact expansion arithmetic otherwise;
-//   3. exact GMP integers otherwise (huge, tiny or subnormal coordinates).
+//   3. otherwise (huge, tiny or subnormal coordinates) exact expansion arithmetic on long
+//      doubles where their exponent range holds every product (x87: always), else exact
+//      GMP integers.
 //
 // Preconditions: all coordinates finite (NaN / Inf give unspecified signs); IEEE binary64
 // with gradual underflow (no flush-to-zero, as -ffast-math would set).
@@ -24,6 +26,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "tritri/detail/expansion.h"
 #include "tritri/detail/gmp_orient.h"
@@ -59,6 +62,34 @@ inline bool expansion_safe(double x) noexcept {
   return a == 0 || (a >= kExpansionMin && a <= kExpansionMax);
 }
 
+// Whether expansions of long doubles decide the determinants exactly for every finite
+// double input: their components are multiples of 2^-1074 below 2^1026, products of three
+// (splits included) multiples of 2^-3222 below 2^3110, which long double's normal range
+// holds when its exponents reach +-4096 (x87 extended precision, IEEE quad).
+inline constexpr bool kLongDoubleExpansionsExact = std::numeric_limits<long double>::digits >= 53 &&
+                                                   std::numeric_limits<long double>::max_exponent >= 4096 &&
+                                                   std::numeric_limits<long double>::min_exponent <= -4096;
+
+// The exact sign of det[b-a; c-a; d-a] in long double expansions (see above: exact for
+// every finite double when kLongDoubleExpansionsExact). Much cheaper than GMP integers
+// when the exponents spread: 1 - 2^-1074 is two components there, 1,075 bits in GMP.
+inline int orient3d_long_double(const double (&p)[12]) noexcept {
+  using LD = long double;
+  Expansion<2, LD> u[3], v[3], w[3];
+  for (int k = 0; k < 3; ++k) {
+    u[k] = diff<LD>(p[3 + k], p[k]);
+    v[k] = diff<LD>(p[6 + k], p[k]);
+    w[k] = diff<LD>(p[9 + k], p[k]);
+  }
+  return det3_sign<2>(u, v, w);
+}
+
+// The same for det[b-a; c-a] of 2D points.
+inline int orient2d_long_double(const double (&p)[6]) noexcept {
+  using LD = long double;
+  return det2_sign<2>(diff<LD>(p[2], p[0]), diff<LD>(p[3], p[1]), diff<LD>(p[4], p[0]), diff<LD>(p[5], p[1]));
+}
+
 template <int N>
 bool all_expansion_safe(const double (&p)[N]) noexcept {
   bool ok = true;
@@ -82,7 +113,10 @@ bool any_two_points_equal(const double (&p)[N], int dim) noexcept {
 [[gnu::noinline]] inline Sign orient3d_exact(const double (&p)[12]) {
   // Repeated points (shared mesh vertices) make the determinant zero: skip the exact work.
   if (any_two_points_equal<12>(p, 3)) return Sign::Zero;
-  if (!all_expansion_safe<12>(p)) return to_sign(orient3d_gmp(p));
+  if (!all_expansion_safe<12>(p)) {
+    if constexpr (kLongDoubleExpansionsExact) return to_sign(orient3d_long_double(p));
+    return to_sign(orient3d_gmp(p));
+  }
   // The differences b-a, c-a, d-a, each split exactly into a rounded part and a tail.
   double hi[9], lo[9];
   bool tails = false;
@@ -108,7 +142,10 @@ bool any_two_points_equal(const double (&p)[N], int dim) noexcept {
 
 [[gnu::noinline]] inline Sign orient2d_exact(const double (&p)[6]) {
   if (any_two_points_equal<6>(p, 2)) return Sign::Zero;
-  if (!all_expansion_safe<6>(p)) return to_sign(orient2d_gmp(p));
+  if (!all_expansion_safe<6>(p)) {
+    if constexpr (kLongDoubleExpansionsExact) return to_sign(orient2d_long_double(p));
+    return to_sign(orient2d_gmp(p));
+  }
   double hi[4], lo[4];
   two_diff(p[2], p[0], hi[0], lo[0]);
   two_diff(p[3], p[1], hi[1], lo[1]);

@@ -33,4 +33,5 @@
 #include "tritri/cgal_kernel.h"
 #include "tritri/rational_kernel.h"
 #include "tritri/implicit_kernel.h"
+#include "tritri/constructed_plane_sides.h"
 #endif
