@@ -127,7 +127,7 @@ std::vector<std::array<int, 2>> partner_covers(const BasicTriangleSoup<typename 
     }
     return box[v];
   };
-  std::vector<int> tested_for(nv, -1), visited_for(nt, -1), stack;
+  std::vector<int> tested_for(nv, -1), visited_for(direct ? 0 : nt, -1), stack;  // the flood's marks
   std::vector<char> inside(nv, 0);
   for (std::size_t qi = 0; qi < partners.size(); ++qi) {
     const int q = static_cast<int>(qi);
