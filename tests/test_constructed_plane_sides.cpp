@@ -22,7 +22,9 @@
 //   4. triangles with no known plane (own-corner fallback) or explicit corners only are
 //      among those checked in 1;
 //   5. separated_by_plane(sides) and meet_only_in_shared_by_sides(ia, ib, sides) answer
-//      true exactly when the oracle's signs prove the claim (both triangles proper).
+//      true exactly when the oracle's signs prove the claim (both triangles proper);
+//   6. orientation_in_plane equals sigma_t (0 without a plane), and classify with
+//      SourcePlaneKernel gives ImplicitKernel's Result (cross-kernel identity).
 // Every branch is counted, printed, and must be hit. TRITRI_TEST_SCALE scales the scenes.
 #include <gtest/gtest.h>
 
@@ -251,6 +253,7 @@ struct Counts {
   long long zero_signs = 0, nonzero_signs = 0, sigma_plus = 0, sigma_minus = 0, all_zero = 0;
   long long same_true = 0, same_false = 0, same_unknown_true = 0;
   long long separated[2] = {}, meet[3][2] = {};  // [answer]; [shared corners][answer]
+  long long orientation_checked = 0, classified = 0, substituted = 0;
 };
 
 void check_pair(const Scene& s, const Tri& a, const Tri& b, Counts& c, long long& failures) {
@@ -296,6 +299,14 @@ void check_pair(const Scene& s, const Tri& a, const Tri& b, Counts& c, long long
       ++(oracle[t][k] == 0 ? c.zero_signs : c.nonzero_signs);
     }
     ++(k0 == 3 ? c.all_zero : (sigma > 0 ? c.sigma_plus : c.sigma_minus));
+    // orientation_in_plane: the sign relating t's own orient3d to its plane's, as sigma
+    // (0 only without a plane).
+    const Triangle& o = *own_points[t];
+    const int orientation = tritri::orientation_in_plane(planes[t], o[0], o[1], o[2]);
+    if (k0 < 3 && orientation != (planes[t] ? sigma : 0))
+      fail("orientation_in_plane(" + std::to_string(t) + ") = " + std::to_string(orientation) + ", oracle " +
+           std::to_string(planes[t] ? sigma : 0));
+    c.orientation_checked += k0 < 3;
     if (!ok)
       fail("side(" + std::to_string(t) + ", .) = " + std::to_string(got[t][0]) + " " + std::to_string(got[t][1]) +
            " " + std::to_string(got[t][2]) + " is not one sign times the oracle's " + std::to_string(oracle[t][0]) +
@@ -339,6 +350,16 @@ void check_pair(const Scene& s, const Tri& a, const Tri& b, Counts& c, long long
                   : "meet_only_in_shared_by_sides: false, but the oracle's signs prove it");
   ++c.separated[got_separated];
   ++c.meet[shared][got_meet];
+  // SourcePlaneKernel inside classify: the same Result as ImplicitKernel's (its plane signs
+  // of either triangle's own corners replaced by the source plane's times the orientation).
+  const tritri::SourcePlane sp[2] = {tritri::source_plane(ta[0], ta[1], ta[2]), tritri::source_plane(tb[0], tb[1], tb[2])};
+  const tritri::ConstructedPlaneSides fresh(ta, tb, sp[0].corners, sp[1].corners);
+  const tritri::SourcePlaneKernel k{&fresh, {sp[0].orientation, sp[1].orientation}};
+  const tritri::Result want = tritri::classify<tritri::ImplicitKernel>(ta[0], ta[1], ta[2], tb[0], tb[1], tb[2]);
+  const tritri::Result got_result = tritri::classify(k, ta[0], ta[1], ta[2], tb[0], tb[1], tb[2]);
+  ++c.classified;
+  c.substituted += sp[0].orientation != 0 && sp[1].orientation != 0;
+  if (!(got_result == want)) fail("classify with SourcePlaneKernel differs from ImplicitKernel's");
 }
 
 TEST(ConstructedPlaneSides, SignsMatchExactOracle) {
@@ -371,6 +392,9 @@ TEST(ConstructedPlaneSides, SignsMatchExactOracle) {
               "0 shared %lld / %lld, 1 shared %lld / %lld, 2 shared %lld / %lld\n",
               c.separated[1], c.separated[0], c.meet[0][1], c.meet[0][0], c.meet[1][1], c.meet[1][0], c.meet[2][1],
               c.meet[2][0]);
+  std::printf("[ cases    ] orientation_in_plane checked %lld; classify with SourcePlaneKernel %lld (both "
+              "orientations known %lld)\n",
+              c.orientation_checked, c.classified, c.substituted);
   EXPECT_EQ(failures, 0);
   for (long long mode : c.modes) EXPECT_GT(mode, 0);
   EXPECT_GT(c.transformed, 0);
@@ -385,7 +409,8 @@ TEST(ConstructedPlaneSides, SignsMatchExactOracle) {
       {"same_plane false", c.same_false},   {"separated false", c.separated[0]},
       {"separated true", c.separated[1]},   {"meet false, 1 shared", c.meet[1][0]},
       {"meet true, 1 shared", c.meet[1][1]}, {"meet false, 2 shared", c.meet[2][0]},
-      {"meet true, 2 shared", c.meet[2][1]}};
+      {"meet true, 2 shared", c.meet[2][1]}, {"orientation checked", c.orientation_checked},
+      {"substituted in classify", c.substituted}};
   for (const auto& [name, n] : branches) EXPECT_GT(n, 0) << name << ": never taken";
 }
 

@@ -107,13 +107,13 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
       planes[t] = DoubleModel::plane_cache((*doubles)[F[t][0]], (*doubles)[F[t][1]], (*doubles)[F[t][2]]);
     });
   }
-  // Implicit points: each triangle's source plane by construction, found once (pair_fault
-  // tests the pairs' sides against them).
-  std::vector<tritri::ConstructedPlane> constructed;
+  // Implicit points: each triangle's source plane by construction and its orientation in
+  // it, found once (pair_fault tests the pairs' sides against them, also inside classify).
+  std::vector<tritri::SourcePlane> constructed;
   if constexpr (std::is_same_v<typename K::Point, tritri::ImplicitPoint>) {
     constructed.resize(F.size());
     tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
-      constructed[t] = tritri::constructed_plane(P[F[t][0]], P[F[t][1]], P[F[t][2]]);
+      constructed[t] = tritri::source_plane(P[F[t][0]], P[F[t][1]], P[F[t][2]]);
     });
   }
   auto classify_pair = [&](int i, int j) {
@@ -122,7 +122,7 @@ ArrangementCheck check_points(const Mesh& mesh, const std::vector<typename K::Po
     const Tri& a = F[i];
     const Tri& b = F[j];
     tritri::Result r;
-    const std::array<const tritri::ConstructedPlane*, 2> pair_planes{
+    const std::array<const tritri::SourcePlane*, 2> pair_planes{
         constructed.empty() ? nullptr : &constructed[i], constructed.empty() ? nullptr : &constructed[j]};
     const PairFault fault = pair_fault<K>(a, {P[a[0]], P[a[1]], P[a[2]]}, b, {P[b[0]], P[b[1]], P[b[2]]}, &r,
                                           constructed.empty() ? nullptr : &pair_planes);
