@@ -175,8 +175,8 @@ TEST_P(GeneratedCases, WideRangeStagesMatchExactRationalSign) {
       for (int k = 0; k < 2; ++k) f2[2 * j + k] = p2[j][k];
     wide += documented_stage(p3) == kWide;
     const int want3 = exact_sign(p3), want2 = exact_sign(p2);
-    const int ld3 = tritri::detail::orient3d_long_double(f3), gmp3 = tritri::detail::orient3d_gmp(f3);
-    const int ld2 = tritri::detail::orient2d_long_double(f2), gmp2 = tritri::detail::orient2d_gmp(f2);
+    const int ld3 = tritri::detail::orient3d_expansion<long double>(f3), gmp3 = tritri::detail::orient3d_gmp(f3);
+    const int ld2 = tritri::detail::orient2d_expansion<long double>(f2), gmp2 = tritri::detail::orient2d_gmp(f2);
     if (ld3 != want3 || gmp3 != want3 || ld2 != want2 || gmp2 != want2) {
       ++failures;
       ADD_FAILURE() << "orient3d" << describe(p3) << ": long double " << ld3 << ", gmp " << gmp3 << ", exact "

@@ -70,24 +70,25 @@ inline constexpr bool kLongDoubleExpansionsExact = std::numeric_limits<long doub
                                                    std::numeric_limits<long double>::max_exponent >= 4096 &&
                                                    std::numeric_limits<long double>::min_exponent <= -4096;
 
-// The exact sign of det[b-a; c-a; d-a] in long double expansions (see above: exact for
-// every finite double when kLongDoubleExpansionsExact). Much cheaper than GMP integers
-// when the exponents spread: 1 - 2^-1074 is two components there, 1,075 bits in GMP.
-inline int orient3d_long_double(const double (&p)[12]) noexcept {
-  using LD = long double;
-  Expansion<2, LD> u[3], v[3], w[3];
+// The exact sign of det[b-a; c-a; d-a] in expansions with components of type F: double
+// for inputs in the expansion-safe range, long double for all others (see above: exact
+// for every finite double when kLongDoubleExpansionsExact; much cheaper than GMP integers
+// when the exponents spread: 1 - 2^-1074 is two components there, 1,075 bits in GMP).
+template <class F>
+int orient3d_expansion(const double (&p)[12]) noexcept {
+  Expansion<2, F> u[3], v[3], w[3];
   for (int k = 0; k < 3; ++k) {
-    u[k] = diff<LD>(p[3 + k], p[k]);
-    v[k] = diff<LD>(p[6 + k], p[k]);
-    w[k] = diff<LD>(p[9 + k], p[k]);
+    u[k] = diff<F>(p[3 + k], p[k]);
+    v[k] = diff<F>(p[6 + k], p[k]);
+    w[k] = diff<F>(p[9 + k], p[k]);
   }
   return det3_sign<2>(u, v, w);
 }
 
 // The same for det[b-a; c-a] of 2D points.
-inline int orient2d_long_double(const double (&p)[6]) noexcept {
-  using LD = long double;
-  return det2_sign<2>(diff<LD>(p[2], p[0]), diff<LD>(p[3], p[1]), diff<LD>(p[4], p[0]), diff<LD>(p[5], p[1]));
+template <class F>
+int orient2d_expansion(const double (&p)[6]) noexcept {
+  return det2_sign<2>(diff<F>(p[2], p[0]), diff<F>(p[3], p[1]), diff<F>(p[4], p[0]), diff<F>(p[5], p[1]));
 }
 
 template <int N>
@@ -114,7 +115,7 @@ bool any_two_points_equal(const double (&p)[N], int dim) noexcept {
   // Repeated points (shared mesh vertices) make the determinant zero: skip the exact work.
   if (any_two_points_equal<12>(p, 3)) return Sign::Zero;
   if (!all_expansion_safe<12>(p)) {
-    if constexpr (kLongDoubleExpansionsExact) return to_sign(orient3d_long_double(p));
+    if constexpr (kLongDoubleExpansionsExact) return to_sign(orient3d_expansion<long double>(p));
     return to_sign(orient3d_gmp(p));
   }
   // The differences b-a, c-a, d-a, each split exactly into a rounded part and a tail.
@@ -131,19 +132,13 @@ bool any_two_points_equal(const double (&p)[N], int dim) noexcept {
     const int s = det3_sign_integer(hi);
     if (s != 2) return to_sign(s);
   }
-  Expansion<2> u[3], v[3], w[3];
-  for (int k = 0; k < 3; ++k) {
-    u[k] = diff(p[3 + k], p[k]);
-    v[k] = diff(p[6 + k], p[k]);
-    w[k] = diff(p[9 + k], p[k]);
-  }
-  return to_sign(det3_sign<2>(u, v, w));
+  return to_sign(orient3d_expansion<double>(p));
 }
 
 [[gnu::noinline]] inline Sign orient2d_exact(const double (&p)[6]) {
   if (any_two_points_equal<6>(p, 2)) return Sign::Zero;
   if (!all_expansion_safe<6>(p)) {
-    if constexpr (kLongDoubleExpansionsExact) return to_sign(orient2d_long_double(p));
+    if constexpr (kLongDoubleExpansionsExact) return to_sign(orient2d_expansion<long double>(p));
     return to_sign(orient2d_gmp(p));
   }
   double hi[4], lo[4];
@@ -155,7 +150,7 @@ bool any_two_points_equal(const double (&p)[N], int dim) noexcept {
     const int s = det2_sign_integer(hi);
     if (s != 2) return to_sign(s);
   }
-  return to_sign(det2_sign<2>(diff(p[2], p[0]), diff(p[3], p[1]), diff(p[4], p[0]), diff(p[5], p[1])));
+  return to_sign(orient2d_expansion<double>(p));
 }
 
 }  // namespace detail
