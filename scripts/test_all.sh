@@ -6,7 +6,8 @@
 #   2. build-asan/  RelWithDebInfo + AddressSanitizer/UBSan: all tests at TRITRI_TEST_SCALE=0.1
 #   3. install build/ to a temporary prefix and build + run tests/consumer and
 #      examples/cpp against it
-#   4. the Python package: pip install . into build-python/venv, binding tests, example
+#   4. the Python package: pip install . into build-python/venv (linking the library
+#      installed in stage 3 instead of compiling it again), binding tests, example
 #   5. the collection runner and report, the Boolean bench and real sets (pytest, with
 #      matplotlib and manifold3d from PyPI), the examples of
 #      README.md and docs/*.md (tests/python/test_docs_examples.py), and the
@@ -64,7 +65,8 @@ cmake --build "$prefix/example" -j "$JOBS"
 "$prefix/example/arrange_example"
 
 stage "[4/6] Python package, binding tests and example"
-JOBS=$JOBS scripts/test_python.sh
+# The module links the arrangements library of build/ from the install of stage 3.
+TRITRI_PREFIX="$prefix/install" JOBS=$JOBS scripts/test_python.sh
 
 stage "[5/6] Collection runner and report tests, tritri-compare on the default meshes"
 VENV=$ROOT/build-python/venv

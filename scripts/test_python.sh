@@ -5,7 +5,11 @@
 # test_exact_classify.py, test_boolean_bindings.py, test_thread_failure.py) and the Python
 # example.
 # Environment: JOBS (parallel compile jobs, default: number of cores), PYTHON (interpreter
-# for the venv, default python3), TRITRI_PY_VENV (venv, default build-python/venv).
+# for the venv, default python3), TRITRI_PY_VENV (venv, default build-python/venv),
+# TRITRI_PREFIX (an install prefix of a Release build of this checkout, as
+# `cmake --install build --prefix DIR`: the module then links that installed arrangements
+# library instead of compiling it again, CMake's TRITRI_PYTHON_PREBUILT; unset: everything
+# is built from source, as a user's `pip install .`).
 # The CMake build directory build-python/wheel is kept, so a rerun recompiles only what
 # changed. Needs the Debian packages of scripts/setup_debian.sh.
 set -euo pipefail
@@ -19,10 +23,12 @@ mkdir -p "$ROOT/build-python"
 [[ -x $VENV/bin/python ]] || "$PYTHON" -m venv "$VENV"
 "$VENV/bin/python" -m pip install -q numpy pytest
 
-echo "=== pip install . (build dir build-python/wheel)"
+# Passed even when empty: the kept build dir's cache would otherwise keep an earlier prefix.
+echo "=== pip install . (build dir build-python/wheel${TRITRI_PREFIX:+, arrangements from $TRITRI_PREFIX})"
 start=$SECONDS
 CMAKE_BUILD_PARALLEL_LEVEL=$JOBS "$VENV/bin/python" -m pip install -q "$ROOT" \
-  --config-settings=build-dir="$ROOT/build-python/wheel"
+  --config-settings=build-dir="$ROOT/build-python/wheel" \
+  --config-settings=cmake.define.TRITRI_PYTHON_PREBUILT="${TRITRI_PREFIX:-}"
 echo "pip install took $((SECONDS - start)) s"
 
 # Run outside the checkout so that `import tritri` can only mean the installed package.
