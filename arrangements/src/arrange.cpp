@@ -116,6 +116,7 @@ Result run_stages(const BasicTriangleSoup<typename M::Input>& input, const Arran
   info.keep_covers = tree != nullptr;
   auto mesh = triangulate<M>(soup, graph, pre.scale_exponent, info);
   s.tpi = info.new_tpi;
+  s.whole_clusters = info.whole_clusters;
   if (!keep) graph = {};
   s.t_triangulate_s = seconds_since(t0);
   detail::memory_checkpoint();

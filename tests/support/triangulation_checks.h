@@ -2,7 +2,7 @@
 //
 // Running the pipeline and checking exactly what it produced, for the arrangement tests
 // (rationals from support/exact_oracle.h; no tolerance anywhere):
-//   run_stages(input, classifier)  the stages one by one (preprocess, candidate pairs,
+//   run_stages(input, classifier[, info])  the stages one by one (preprocess, candidate pairs,
 //                  classification, intersection graph, triangulate), keeping the soup, the
 //                  graph and the triangulation in the graph's numbering; the one place
 //                  that calls triangulate()
@@ -101,7 +101,9 @@ struct Pipeline {
   Triangulated tr;
 };
 
-inline Pipeline run_stages(const TriangleSoup& input, Classifier classifier) {
+// info: when given, passed to triangulate() (its options, e.g. per_triangle_only, are
+// read; its results, e.g. new_tpi and whole_clusters, are left in it).
+inline Pipeline run_stages(const TriangleSoup& input, Classifier classifier, TriangulationInfo* info = nullptr) {
   Pipeline p;
   PreprocessStats stats;
   p.soup = preprocess(input, PreprocessOptions{}, stats);
@@ -109,9 +111,10 @@ inline Pipeline run_stages(const TriangleSoup& input, Classifier classifier) {
   const auto& F = p.soup.triangles;
   const auto records = classify_pairs(V, F, candidate_pairs(V, F), classifier);
   p.graph = build_intersection_graph(V, F, records);
-  TriangulationInfo info;
-  const OutputMesh mesh = triangulate(p.soup, p.graph, 0, info);
-  p.tr = in_graph_numbering(p.soup, p.graph, mesh, info);
+  TriangulationInfo own;
+  TriangulationInfo& used = info != nullptr ? *info : own;
+  const OutputMesh mesh = triangulate(p.soup, p.graph, 0, used);
+  p.tr = in_graph_numbering(p.soup, p.graph, mesh, used);
   return p;
 }
 

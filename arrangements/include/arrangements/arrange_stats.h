@@ -43,6 +43,7 @@ struct ArrangeStats {
   std::size_t intersection_points = 0;  // distinct new points of classification (LPIs)
   std::size_t segments = 0, tri_segments = 0;
   std::size_t tpi = 0;
+  std::size_t whole_clusters = 0;  // coplanar clusters triangulated at once (stage 5)
   std::size_t out_vertices = 0, out_edges = 0, out_triangles = 0;
   long long euler = 0;
   std::size_t orient3d_calls = 0, orient2d_calls = 0;  // in the classification stage
@@ -97,6 +98,8 @@ inline constexpr auto kArrangeStats = std::make_tuple(
     stat_entry("intersection_points", &ArrangeStats::intersection_points, 0, "distinct new points of classification"),
     stat_entry("lpi", &ArrangeStats::intersection_points, 0, "the same (they are LPIs)"),
     stat_entry("tpi", &ArrangeStats::tpi, 0, "new points of triangulation (TPIs)"),
+    stat_entry("whole_clusters", &ArrangeStats::whole_clusters, 0,
+               "clusters of overlapping coplanar triangles triangulated at once, not per triangle"),
     stat_entry("segments", &ArrangeStats::segments, 0, "distinct constraint segments"),
     stat_entry("tri_segments", &ArrangeStats::tri_segments, 0, "constraint segments summed over triangles"),
     stat_entry("coplanar_pairs", &ArrangeStats::coplanar_pairs, 0, "intersecting pairs that are coplanar"),

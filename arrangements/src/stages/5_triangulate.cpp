@@ -4,12 +4,14 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numeric>
 
 #include "arrangements/memory_budget.h"
 #include "models/double_model.h"
 #include "models/exact_model.h"
+#include "stages/5_triangulate_cluster.h"
 #include "stages/5_triangulate_triangle.h"
 #include "support/label_set_table.h"
 
@@ -27,9 +29,26 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
     busy[t] = !g.triangle_points[t].empty() || !g.triangle_segments[t].empty() || !g.coplanar_partners[t].empty();
     for (int k = 0; k < 3 && !busy[t]; ++k) busy[t] = !g.edge_points[g.triangle_edges[t][k]].empty();
   }
+  // Coplanar clusters where per-triangle splitting would repeat most of the work are
+  // triangulated whole (5_triangulate_cluster.h); the other triangles one by one.
+  const std::vector<std::vector<int>> whole =
+      info.per_triangle_only ? std::vector<std::vector<int>>{} : clusters_to_triangulate_whole(g);
+  std::vector<char> done(nF, 0);
+  std::atomic<std::size_t> whole_done{0};
+  tbb::parallel_for(std::size_t{0}, whole.size(), [&](std::size_t c) {
+    detail::memory_checkpoint();
+    auto cluster_pieces = split_cluster_of<M>(soup, g, whole[c]);
+    if (!cluster_pieces) return;  // no enclosing triangle: per triangle
+    whole_done.fetch_add(1, std::memory_order_relaxed);
+    for (std::size_t k = 0; k < whole[c].size(); ++k) {
+      pieces[whole[c][k]] = std::move((*cluster_pieces)[k]);
+      done[whole[c][k]] = 1;
+    }
+  });
+  info.whole_clusters = whole_done.load();
   tbb::parallel_for(std::size_t{0}, nF, [&](std::size_t t) {
     detail::memory_checkpoint();
-    if (busy[t]) pieces[t] = split_triangle_of<M>(soup, g, static_cast<int>(t));
+    if (busy[t] && !done[t]) pieces[t] = split_triangle_of<M>(soup, g, static_cast<int>(t));
   });
 
   // New TPIs, deduplicated exactly over all triangles (a crossing of two constraints is

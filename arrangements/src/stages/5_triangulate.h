@@ -47,6 +47,10 @@ struct TriangulationInfo {
   // share its region, an index into covers (the soup triangles covering it, the emitting
   // one included), else -1.
   bool keep_covers = false;
+  // Coplanar clusters triangulated whole (5_triangulate_cluster.h): how many; with
+  // per_triangle_only, none (every triangle split by itself: tests compare both ways).
+  bool per_triangle_only = false;
+  std::size_t whole_clusters = 0;
   std::vector<int> emitted_by, cover_of;
   std::vector<std::vector<int>> covers;
 };

@@ -1,10 +1,8 @@
 #include "stages/5_triangulate_triangle.h"
 
 #include <algorithm>
-#include <cmath>
 #include <deque>
 #include <map>
-#include <numeric>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -12,6 +10,8 @@
 #include "models/double_model.h"
 #include "models/exact_model.h"
 #include "stages/5_local_triangulation.h"
+#include "stages/5_insertion_order.h"
+#include "stages/5_transverse_supports.h"
 #include "support/bounding_box.h"
 
 namespace arrangements {
@@ -27,51 +27,6 @@ std::pair<tritri::Plane, int> projection(const std::vector<typename M::Vertex>& 
   const auto proj = M::projection(V[t[0]], V[t[1]], V[t[2]]);
   if (proj.second == 0) throw std::logic_error("triangulate: degenerate triangle");
   return proj;
-}
-
-// The interior points (rank_of[l][0] < 0; corners excluded) in the order of a Morton curve
-// over their boxes' centres in the projection, ties by local id (deterministic): each
-// visibility walk then starts near its point instead of crossing the triangle (100
-// coplanar wedges: most orient2d calls were the walks' before).
-template <class M>
-std::vector<int> spatial_order(const local::LocalTriangulation<M>& lt, const std::vector<std::array<int, 2>>& rank_of,
-                               tritri::Plane plane) {
-  const auto [i, j] = tritri::plane_axes(plane);
-  std::vector<std::array<double, 2>> centre;
-  std::vector<int> ids;
-  for (std::size_t l = 3; l < rank_of.size(); ++l) {
-    if (rank_of[l][0] >= 0) continue;
-    const auto box = M::box(lt.pts[l]);
-    auto mid = [](const tritri::XBounds& b) {
-      const double m = 0.5 * b.lo + 0.5 * b.hi;
-      return std::isfinite(m) ? m : 0.0;
-    };
-    centre.push_back({mid(box[i]), mid(box[j])});
-    ids.push_back(static_cast<int>(l));
-  }
-  if (ids.empty()) return ids;
-  std::array<double, 2> lo = centre[0], hi = centre[0];
-  for (const auto& c : centre)
-    for (int a = 0; a < 2; ++a) {
-      lo[a] = std::min(lo[a], c[a]);
-      hi[a] = std::max(hi[a], c[a]);
-    }
-  auto cell = [&](double x, int a) {  // 0 .. 2^21 - 1
-    const double span = hi[a] - lo[a];
-    const double f = span > 0 && std::isfinite(span) ? (x - lo[a]) / span : 0.0;
-    return static_cast<std::uint64_t>(std::clamp(f, 0.0, 1.0) * 2097151.0);
-  };
-  auto spread = [](std::uint64_t v) {  // bit k of v to bit 2k
-    std::uint64_t r = 0;
-    for (int b = 0; b < 21; ++b) r |= ((v >> b) & 1u) << (2 * b);
-    return r;
-  };
-  std::vector<std::pair<std::uint64_t, int>> keyed(ids.size());
-  for (std::size_t k = 0; k < ids.size(); ++k)
-    keyed[k] = {spread(cell(centre[k][0], 0)) | (spread(cell(centre[k][1], 1)) << 1), ids[k]};
-  std::sort(keyed.begin(), keyed.end());
-  for (std::size_t k = 0; k < ids.size(); ++k) ids[k] = keyed[k].second;
-  return ids;
 }
 
 // The coplanar partners covering each local triangle of t: (local triangle, index in
@@ -107,17 +62,8 @@ std::vector<std::array<int, 2>> partner_covers(const BasicTriangleSoup<typename 
   // Few partners and triangles: each pair tested directly (no seeds, no flood).
   const bool direct = nt * partners.size() <= kDirectUpTo;
   // Triangles around each vertex (CSR), for the seeds.
-  std::vector<int> first, around;
-  if (!direct) {
-    first.assign(nv + 1, 0);
-    around.resize(3 * nt);
-    for (const LocalTriangle& T : lt.tris)
-      for (int k = 0; k < 3; ++k) ++first[T.v[k] + 1];
-    for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
-    std::vector<int> fill(first.begin(), first.end() - 1);
-    for (std::size_t T = 0; T < nt; ++T)
-      for (int k = 0; k < 3; ++k) around[fill[lt.tris[T].v[k]]++] = static_cast<int>(T);
-  }
+  const local::TrianglesAround at = direct ? local::TrianglesAround{} : local::triangles_around(lt);
+  const std::vector<int>&first = at.first, &around = at.around;
   std::vector<typename M::Box> box(nv);
   std::vector<char> has_box(nv, 0);
   auto box_of = [&](int v) -> const typename M::Box& {
@@ -228,6 +174,21 @@ std::vector<std::array<int, 2>> partner_covers(const BasicTriangleSoup<typename 
 }  // namespace
 
 template <class M>
+std::vector<int> points_along_edge(const BasicIntersectionGraph<typename M::Point>& g, int from, int to, int e) {
+  std::vector<int> on_edge = g.edge_points[e];
+  std::vector<std::pair<typename M::Key, int>> keyed(on_edge.size());
+  for (std::size_t i = 0; i < on_edge.size(); ++i) keyed[i] = {M::key(g.points[on_edge[i]]), on_edge[i]};
+  std::sort(keyed.begin(), keyed.end(), [&](const auto& x, const auto& y) {
+    const int c = M::compare(g.points[x.second], x.first, g.points[y.second], y.first);
+    return c != 0 ? c < 0 : x.second < y.second;
+  });
+  for (std::size_t i = 0; i < on_edge.size(); ++i) on_edge[i] = keyed[i].second;
+  const auto &p = g.points[from], &q = g.points[to];
+  if (!on_edge.empty() && M::compare(p, M::key(p), q, M::key(q)) > 0) std::reverse(on_edge.begin(), on_edge.end());
+  return on_edge;
+}
+
+template <class M>
 Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::Vertex>& soup,
                                            const BasicIntersectionGraph<typename M::Point>& g, int t) {
   using Vertex = typename M::Vertex;
@@ -250,26 +211,14 @@ Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::V
   };
   const int c0 = add(tri[0]), c1 = add(tri[1]), c2 = add(tri[2]);
   lt.start(c0, c1, c2);
-  // Edge points: sorted along each edge by an exact order that is monotone along any line
-  // (tritri::compare_along_direction: a projection, ties by xyz; intervals settle it where
-  // xyz would meet exact ties on axis-parallel edges); an edge point splits the sub-edge
-  // between its inserted neighbours in that order (no predicate).
+  // Edge points in order along each edge (points_along_edge); an edge point splits the
+  // sub-edge between its inserted neighbours in that order (no predicate).
   // chain[k]: the local ids along edge k, corners included; rank_of[l]: (edge, rank) of
   // local id l on its edge, edge -1 for corners and interior points.
   std::array<std::vector<int>, 3> chain;
   std::vector<std::array<int, 2>> rank_of;
   for (int k = 0; k < 3; ++k) {
-    std::vector<int> on_edge = g.edge_points[g.triangle_edges[t][k]];
-    std::vector<std::pair<typename M::Key, int>> keyed(on_edge.size());
-    for (std::size_t i = 0; i < on_edge.size(); ++i) keyed[i] = {M::key(g.points[on_edge[i]]), on_edge[i]};
-    std::sort(keyed.begin(), keyed.end(), [&](const auto& x, const auto& y) {
-      const int c = M::compare(g.points[x.second], x.first, g.points[y.second], y.first);
-      return c != 0 ? c < 0 : x.second < y.second;
-    });
-    for (std::size_t i = 0; i < on_edge.size(); ++i) on_edge[i] = keyed[i].second;
-    const Point &from = g.points[tri[k]], &to = g.points[tri[(k + 1) % 3]];
-    if (!on_edge.empty() && M::compare(from, M::key(from), to, M::key(to)) > 0)
-      std::reverse(on_edge.begin(), on_edge.end());
+    const std::vector<int> on_edge = points_along_edge<M>(g, tri[k], tri[(k + 1) % 3], g.triangle_edges[t][k]);
     chain[k].push_back(local_of.at(tri[k]));
     for (int x : on_edge) {
       const int l = add(x);
@@ -289,38 +238,11 @@ Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::V
   const auto& segs = g.triangle_segments[t];
   std::vector<std::array<Vertex, 3>> support(segs.size());
   std::vector<int> line_of(segs.size());
-  auto at = [&](int id) {
-    if (id >= 0) return V[id];
-    const Tri& u = soup.triangles[-1 - id];
-    return M::auxiliary_point(V[u[0]], V[u[1]], V[u[2]]);
-  };
-  // Many segments of t share a support plane (a partner's plane): each distinct plane is
-  // tested once (a coplanar partner's plane costs three exact zeros).
-  // tested[i]: whether the i-th distinct plane is transverse; tested_index: its i.
-  std::vector<char> tested;
-  std::map<std::array<int, 3>, int> tested_index;
+  TransverseSupports<M> supports(soup, g, tri);
   for (std::size_t s = 0; s < segs.size(); ++s) {
-    auto it = std::lower_bound(g.segment_supports.begin(), g.segment_supports.end(), segs[s],
-                               [](const SegmentSupport& x, const std::array<int, 2>& e) { return x.ends < e; });
-    bool found = false;
-    for (; !found && it != g.segment_supports.end() && it->ends == segs[s]; ++it)
-      for (const auto& pl : it->planes) {
-        auto [known, fresh] = tested_index.emplace(pl, static_cast<int>(tested.size()));
-        if (fresh) {
-          const std::array<Vertex, 3> P = {at(pl[0]), at(pl[1]), at(pl[2])};
-          bool transverse = false;
-          for (int k = 0; k < 3 && !transverse; ++k)
-            transverse = M::orient3d(P[0], P[1], P[2], V[tri[k]]) != tritri::Sign::Zero;
-          tested.push_back(transverse);
-        }
-        if (tested[static_cast<std::size_t>(known->second)]) {
-          support[s] = {at(pl[0]), at(pl[1]), at(pl[2])};
-          line_of[s] = known->second;
-          found = true;
-          break;
-        }
-      }
-    if (!found) throw std::logic_error("triangulate: no transverse plane for a constraint segment");
+    const auto found = supports.of_segment(segs[s]);
+    support[s] = found.plane;
+    line_of[s] = found.line;
   }
   Piece<Point> piece;
   auto crossing = [&](int c1, int c2) {
@@ -387,17 +309,11 @@ Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::V
       lt.split_boundary_edge(chain[k][*std::prev(next)], chain[k][*next], l);
       inserted_ranks[k].insert(next, r);
     };
-    for (const int l : spatial_order(lt, rank_of, plane)) insert(l);
-    std::vector<int> order(segs.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::uint64_t seed = 0x2545F4914F6CDD1Dull;
-    for (std::size_t i = order.size(); i > 1; --i) {
-      seed ^= seed << 13;
-      seed ^= seed >> 7;
-      seed ^= seed << 17;
-      std::swap(order[i - 1], order[seed % i]);
-    }
-    for (const int s : order) {
+    std::vector<int> interior;  // corners excluded
+    for (std::size_t l = 3; l < rank_of.size(); ++l)
+      if (rank_of[l][0] < 0) interior.push_back(static_cast<int>(l));
+    for (const int l : local::spatial_order(lt, std::move(interior), plane)) insert(l);
+    for (const int s : local::shuffled_order(segs.size())) {
       const auto [a, b] = endpoints(static_cast<std::size_t>(s));
       insert(a);
       insert(b);
@@ -430,6 +346,9 @@ Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::V
   return piece;
 }
 
+template std::vector<int> points_along_edge<DoubleModel>(const IntersectionGraph&, int, int, int);
+template std::vector<int> points_along_edge<ExactModel>(const BasicIntersectionGraph<ExactModel::Point>&, int, int,
+                                                        int);
 template Piece<tritri::ImplicitPoint> split_triangle_of<DoubleModel>(const TriangleSoup&, const IntersectionGraph&,
                                                                      int);
 template Piece<ExactModel::Point> split_triangle_of<ExactModel>(const BasicTriangleSoup<ExactModel::Vertex>&,

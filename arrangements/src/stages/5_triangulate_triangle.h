@@ -35,6 +35,14 @@ struct Piece {
   std::vector<std::vector<int>> covers;     // distinct sets of soup triangles covering (t included)
 };
 
+// points_along_edge<M>(g, from, to, e): the points strictly inside edge e of the graph
+// (from corner `from` to corner `to`), in order from `from`: sorted by the model's exact
+// order, which is monotone along any line (tritri::compare_along_direction: a projection,
+// ties by xyz; intervals settle it where xyz would meet exact ties on axis-parallel
+// edges). O(k log k) comparisons for k points.
+template <class M>
+std::vector<int> points_along_edge(const BasicIntersectionGraph<typename M::Point>& g, int from, int to, int e);
+
 template <class M>
 Piece<typename M::Point> split_triangle_of(const BasicTriangleSoup<typename M::Vertex>& soup,
                                            const BasicIntersectionGraph<typename M::Point>& g, int t);
