@@ -4,7 +4,7 @@
 // triangle by its own points and constraints and those of its coplanar partners
 // (split_triangle_of), so a point or crossing shared by k mutually overlapping coplanar
 // triangles is inserted k times: n thin wedges through one region cost O(n^3) insertions
-// (100 wedges: 77 s) for an output of O(n^2) triangles. A cluster (the triangles
+// (100 wedges: 71 s) for an output of O(n^2) triangles. A cluster (the triangles
 // connected by coplanar partnership, all in one plane) where that repetition dominates is
 // instead triangulated once, as one constrained triangulation of all its points and
 // constraints, and each soup triangle of it keeps the pieces it covers.
