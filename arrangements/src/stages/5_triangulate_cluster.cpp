@@ -137,7 +137,8 @@ std::optional<std::vector<Piece<typename M::Point>>> split_cluster_of(
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   auto local_of = [&](int id) {
     const auto it = std::lower_bound(ids.begin(), ids.end(), id);
-    if (it == ids.end() || *it != id) throw std::logic_error("triangulate: a constraint's endpoint is not a point of its cluster");
+    if (it == ids.end() || *it != id)
+      throw std::logic_error("triangulate: a constraint's endpoint is not a point of its cluster");
     return 3 + static_cast<int>(it - ids.begin());
   };
   for (const int id : ids) lt.add_vertex(g.points[id]);
@@ -171,13 +172,18 @@ std::optional<std::vector<Piece<typename M::Point>>> split_cluster_of(
   };
   std::vector<Constraint> constraints;
   TransverseSupports<M> supports(soup, g, ref);
-  std::vector<int> edges_done;
+  std::vector<int> edges;  // the cluster's edges, sorted; an edge shared by two of its triangles once
+  for (const int t : cluster) edges.insert(edges.end(), g.triangle_edges[t].begin(), g.triangle_edges[t].end());
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<char> edge_done(edges.size(), 0);
   for (const int t : cluster) {
     const Tri& tri = soup.triangles[t];
     for (int k = 0; k < 3; ++k) {
       const int e = g.triangle_edges[t][k];
-      if (std::find(edges_done.begin(), edges_done.end(), e) != edges_done.end()) continue;
-      edges_done.push_back(e);
+      char& done = edge_done[std::lower_bound(edges.begin(), edges.end(), e) - edges.begin()];
+      if (done) continue;
+      done = 1;
       const auto s = supports.of_plane({tri[k], tri[(k + 1) % 3], -1 - t});
       if (!s) throw std::logic_error("triangulate: an edge's plane is not transverse to its cluster");
       std::vector<int> chain = points_along_edge<M>(g, tri[k], tri[(k + 1) % 3], e);
