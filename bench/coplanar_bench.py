@@ -368,7 +368,8 @@ def parse_args(argv):
                     metavar="N[,N...]", help="segments per cylinder of strips, 3 to --max-strip-n each "
                                              "(default: 100,200,400,800,1600)")
     ap.add_argument("--wedge-sizes", type=int_list(3, MAX_N), default=[20, 40, 60],
-                    metavar="N[,N...]", help="wedges, 3 to %d each (default: 20,40,60; 100 takes minutes)" % MAX_N)
+                    metavar="N[,N...]",
+                    help="wedges, 3 to %d each (default: 20,40,60; 180 take seconds, more are refused)" % MAX_N)
     ap.add_argument("--max-strip-n", type=integer(3, MAX_N), default=1600,
                     help="the largest strips size accepted: their output is quadratic (default: 1600)")
     ap.add_argument("--threads", type=thread_list, default=[1, 2], metavar="T[,T...]",
