@@ -25,7 +25,8 @@
 //                   output triangle uses it (for checks that follow graph ids into the mesh)
 // Exactness: see 5_triangulate_triangle.h; points are never rounded here.
 // Output does not depend on the number of threads.
-// Cost: the per-triangle triangulations, parallel over triangles (TBB), plus
+// Cost: the per-triangle triangulations, parallel over triangles (TBB), or one per
+// coplanar cluster where that saves the repeated work (5_triangulate_cluster.h), plus
 // O(T log T) for deduplicating T new TPIs.
 #pragma once
 
