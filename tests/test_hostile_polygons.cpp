@@ -2,7 +2,7 @@
 // per-triangle pipeline costs up to the fourth power of their size. Each case finishes with
 // a valid arrangement (check_arrangement, exact) or is refused with an InputError
 // (too_large) that says why, before stage 3 allocates anything for it
-// (arrangements/src/arrange.cpp: the coplanar-cluster budget). No timing assertions: the
+// (stages/2_coplanar_budget.h, applied during detection). No timing assertions: the
 // times are printed only.
 // - a self-intersecting star polygon {n/(n/2)} given as ONE OFF face: its projection is
 //   not simple, so the reader splits it into the fan from its first corner

@@ -20,7 +20,6 @@
 #include "models/exact_model.h"
 #include "stages/1_preprocess.h"
 #include "stages/2_candidate_pairs.h"
-#include "stages/2_coplanar_budget.h"
 #include "stages/3_classify_pairs.h"
 #include "stages/4_intersection_graph.h"
 #include "stages/5_triangulate.h"
@@ -79,10 +78,10 @@ Result run_stages(const BasicTriangleSoup<typename M::Input>& input, const Arran
 
   // Stage 2: the pairs to classify (overlapping bounding boxes, exact early-outs).
   t0 = std::chrono::steady_clock::now();
-  BasicDetectedPairs<M> detected = detect_pairs<M>(soup.vertices, soup.triangles, workers, soup.polygon);
+  BasicDetectedPairs<M> detected =
+      detect_pairs<M>(soup.vertices, soup.triangles, workers, soup.polygon, /*coplanar_budget=*/true);
   s.candidate_pairs = detected.box_pairs;
   s.classified_pairs = detected.pairs.size();
-  refuse_huge_coplanar_clusters(soup.triangles.size(), detected.coplanar);
   s.t_detect_s = seconds_since(t0);
   detail::memory_checkpoint();
   detail::memory_checkpoint();

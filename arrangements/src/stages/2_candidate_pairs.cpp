@@ -6,6 +6,7 @@
 #include <tbb/parallel_sort.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -18,6 +19,7 @@
 #include "arrangements/memory_budget.h"
 #include "arrangements/thread_count.h"
 #include "models/exact_model.h"
+#include "stages/2_coplanar_budget.h"
 #include "stages/2_early_outs.h"
 
 namespace arrangements {
@@ -51,7 +53,7 @@ struct VertexBoxes {
 
 template <class M>
 BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, const std::vector<Tri>& F, int threads,
-                                   std::span<const std::int64_t> polygon) {
+                                   std::span<const std::int64_t> polygon, bool coplanar_budget) {
   using Vertex = typename M::Vertex;
   check_threads(threads);
   BasicDetectedPairs<M> out;
@@ -71,6 +73,7 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
     std::vector<Pairs> chunks;
     Pairs coplanar;  // the kept pairs that lie in one plane (few, usually)
     std::size_t box_pairs = 0;
+    std::size_t next_budget_check = std::size_t{1} << 14;  // coplanar pairs (coplanar_budget)
   };
   // ets_key_per_instance: local() is a native thread-local lookup, not a hash of the
   // thread id (which cost 6% of detection on pairs that a box search yields by millions).
@@ -100,7 +103,14 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
       local.chunks.back().reserve(kChunk);
     }
     local.chunks.back().emplace_back(i, j);
-    if (decided.flat) local.coplanar.emplace_back(i, j);
+    if (!decided.flat) return;
+    local.coplanar.emplace_back(i, j);
+    if (coplanar_budget && local.coplanar.size() >= local.next_budget_check) {
+      local.next_budget_check *= 2;
+      Pairs sorted = local.coplanar;
+      std::sort(sorted.begin(), sorted.end());
+      refuse_huge_coplanar_clusters(F.size(), sorted);
+    }
   };
   // Doubles: the triangles around a hub vertex are paired by their directions from it
   // (tritri/hub_pairs.h: a fan of n triangles makes O(n) pairs, not n^2 / 2); rational
@@ -127,14 +137,15 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
     tbb::parallel_sort(out.pairs.begin(), out.pairs.end());
     tbb::parallel_sort(out.coplanar.begin(), out.coplanar.end());
   });
+  if (coplanar_budget) refuse_huge_coplanar_clusters(F.size(), out.coplanar);
   return out;
 }
 
 template DetectedPairs detect_pairs<DoubleModel>(const std::vector<Vec3>&, const std::vector<Tri>&, int,
-                                                 std::span<const std::int64_t>);
+                                                 std::span<const std::int64_t>, bool);
 template BasicDetectedPairs<ExactModel> detect_pairs<ExactModel>(const std::vector<ExactModel::Vertex>&,
                                                                  const std::vector<Tri>&, int,
-                                                                 std::span<const std::int64_t>);
+                                                                 std::span<const std::int64_t>, bool);
 
 std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Vec3>& V, const std::vector<Tri>& F, int threads,
                                                  std::span<const std::int64_t> polygon) {
