@@ -126,13 +126,17 @@ std::optional<std::vector<Piece<typename M::Point>>> split_cluster_of(
   lt.start(0, 1, 2);
 
   // Local vertices 3, 4, ...: the cluster's graph points in id order (ids), then new TPIs.
+  std::vector<int> edges;  // the cluster's edges, sorted; an edge shared by two of its triangles once
+  for (const int t : cluster) edges.insert(edges.end(), g.triangle_edges[t].begin(), g.triangle_edges[t].end());
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   std::vector<int> ids;
   for (const int t : cluster) {
     const Tri& tri = soup.triangles[t];
     ids.insert(ids.end(), tri.begin(), tri.end());
-    for (const int e : g.triangle_edges[t]) ids.insert(ids.end(), g.edge_points[e].begin(), g.edge_points[e].end());
     ids.insert(ids.end(), g.triangle_points[t].begin(), g.triangle_points[t].end());
   }
+  for (const int e : edges) ids.insert(ids.end(), g.edge_points[e].begin(), g.edge_points[e].end());
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   auto local_of = [&](int id) {
@@ -147,17 +151,12 @@ std::optional<std::vector<Piece<typename M::Point>>> split_cluster_of(
   // edge), as sorted (point id, edge id) pairs: what lies along an edge, known by
   // construction.
   std::vector<std::array<int, 2>> edges_at;  // (point id, edge id) for the cluster's edges
-  for (const int t : cluster) {
-    const Tri& tri = soup.triangles[t];
-    for (int k = 0; k < 3; ++k) {
-      const int e = g.triangle_edges[t][k];
-      edges_at.push_back({tri[k], e});
-      edges_at.push_back({tri[(k + 1) % 3], e});
-      for (const int p : g.edge_points[e]) edges_at.push_back({p, e});
-    }
+  for (const int e : edges) {
+    edges_at.push_back({g.edges[e][0], e});
+    edges_at.push_back({g.edges[e][1], e});
+    for (const int p : g.edge_points[e]) edges_at.push_back({p, e});
   }
   std::sort(edges_at.begin(), edges_at.end());
-  edges_at.erase(std::unique(edges_at.begin(), edges_at.end()), edges_at.end());
   auto edges_of = [&](int id) {
     const auto lo = std::lower_bound(edges_at.begin(), edges_at.end(), std::array<int, 2>{id, INT_MIN});
     const auto hi = std::lower_bound(lo, edges_at.end(), std::array<int, 2>{id + 1, INT_MIN});
@@ -172,10 +171,6 @@ std::optional<std::vector<Piece<typename M::Point>>> split_cluster_of(
   };
   std::vector<Constraint> constraints;
   TransverseSupports<M> supports(soup, g, ref);
-  std::vector<int> edges;  // the cluster's edges, sorted; an edge shared by two of its triangles once
-  for (const int t : cluster) edges.insert(edges.end(), g.triangle_edges[t].begin(), g.triangle_edges[t].end());
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   std::vector<char> edge_done(edges.size(), 0);
   for (const int t : cluster) {
     const Tri& tri = soup.triangles[t];
