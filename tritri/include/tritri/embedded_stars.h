@@ -142,14 +142,19 @@ inline bool star_embedded(std::span<const std::array<double, 3>> V, int v, const
   if (!(reach > 0) || !std::isfinite(reach)) return false;
   int exponent = 0;
   std::frexp(reach, &exponent);
+  // x 2^-exponent: one product by that power of two when it is a normal double (the same
+  // value as std::ldexp, which is a library call per coordinate), else std::ldexp.
+  const bool by_product = exponent > -1000 && exponent < 1000;
+  const double scale = by_product ? std::ldexp(1.0, -exponent) : 0;
+  auto scaled = [&](double x) { return by_product ? x * scale : std::ldexp(x, -exponent); };
   double n[3] = {0, 0, 0};
   for (int i = 0; i < d; ++i) {
     const auto& a = V[static_cast<std::size_t>(link[i][0])];
     const auto& b = V[static_cast<std::size_t>(link[i][1])];
     double e[3], f[3];
     for (int k = 0; k < 3; ++k) {
-      e[k] = std::ldexp(a[k] - p[k], -exponent);
-      f[k] = std::ldexp(b[k] - p[k], -exponent);
+      e[k] = scaled(a[k] - p[k]);
+      f[k] = scaled(b[k] - p[k]);
     }
     n[0] += e[1] * f[2] - e[2] * f[1];
     n[1] += e[2] * f[0] - e[0] * f[2];

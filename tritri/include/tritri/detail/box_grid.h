@@ -20,18 +20,25 @@
 // with no global list or sort. Long triangles thus sit on coarse levels instead of being
 // listed in thousands of cells. Declines when the pairwise tests would exceed
 // 40 n log2 n (about a segment tree's cost, measured).
+// Speed: a box's level and cell range are found once; a cell's boxes are gathered into one
+// array per coordinate and each is tested against the later ones without branches (a box
+// test was a mispredicted branch per comparison); the coarser levels also keep contiguous
+// copies of their boxes, which the finer boxes beneath them scan. On clean 70-120 k triangle
+// meshes this made the search 11-27% faster, on EMBER 1063852+72214 40%.
 // Exactness: overlap is decided by exact comparisons of the box coordinates (closed boxes:
 // touching counts). Cell indices come from floor((x - origin) / h_l) clamped to the grid,
 // evaluated in floating point; every step is monotone in x, so the minimum corner of the
 // intersection of two boxes, which lies in both boxes, falls in a level-j cell that both
 // boxes meet at level j.
 // Cost: O(n L + S + T) for n boxes on L levels, S <= 8 n cell entries and T pair tests
-// (at most 40 n log2 n, else the grid declines). Memory: 4 bytes per entry and per cell;
-// level 0 has at most 8 n + 64 cells, each further level about 8 times fewer.
+// (at most 40 n log2 n, else the grid declines). Memory: 4 bytes per entry and per cell,
+// 56 per entry above level 0, 25 per box; level 0 has at most 8 n + 64 cells, each further
+// level about 8 times fewer.
 #pragma once
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <array>
@@ -39,6 +46,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace tritri::detail::box_pairs {
@@ -47,8 +55,7 @@ namespace tritri::detail::box_pairs {
 struct GridLevel {
   int dim[3] = {1, 1, 1};
   double inv_h = 0;
-  std::vector<std::uint32_t> first;   // cell c lists member[first[c] .. first[c + 1])
-  std::vector<std::uint32_t> member;  // box indices
+  std::vector<std::uint32_t> first;  // cell c holds entries first[c] .. first[c + 1] of its level
 
   std::size_t cells() const { return static_cast<std::size_t>(dim[0]) * dim[1] * dim[2]; }
   std::size_t index(int x, int y, int z) const {
@@ -123,35 +130,34 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
         for (int x = r[0]; x <= r[3]; ++x) f(g.index(x, y, z));
   };
   // Each box on the first level where it meets at most 8 cells; the levels go up to one
-  // of at most 2 cells per axis, where every box qualifies. In parallel: the counts with
-  // relaxed atomic increments (the order of boxes within a cell does not matter).
+  // of at most 2 cells per axis, where every box qualifies. Its level and cell range there
+  // are found once. In parallel: the counts with relaxed atomic increments (the order of
+  // boxes within a cell does not matter).
   add_level();
   while (levels.back().dim[0] > 2 || levels.back().dim[1] > 2 || levels.back().dim[2] > 2) add_level();
   std::vector<std::uint8_t> level_of(n);
+  std::vector<std::array<int, 6>> range_of(n);
   for (GridLevel& g : levels) g.first.assign(g.cells() + 1, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i < r.end(); ++i) {
       std::size_t l = 0;
-      while (count(range(levels[l], boxes[i])) > 8) ++l;
+      std::array<int, 6> cells = range(levels[0], boxes[i]);
+      while (count(cells) > 8) cells = range(levels[++l], boxes[i]);
       level_of[i] = static_cast<std::uint8_t>(l);
+      range_of[i] = cells;
       GridLevel& g = levels[l];
-      for_cells(g, range(g, boxes[i]), [&](std::size_t c) {
+      for_cells(g, cells, [&](std::size_t c) {
         std::atomic_ref<std::uint32_t>(g.first[c + 1]).fetch_add(1, std::memory_order_relaxed);
       });
     }
   });
-  for (GridLevel& g : levels)
-    for (std::size_t c = 0; c < g.cells(); ++c) g.first[c + 1] += g.first[c];
-  // Decline when the pairwise tests would cost more than the segment tree: boxes crowding
-  // the cells of one level, or small boxes under many large ones. A test is a few
-  // comparisons on contiguous data; measured on the EMBER pairs, 40 n log2 n of them still
-  // take less time than CGAL's segment tree on the same boxes.
-  const double budget = 40 * static_cast<double>(n) * std::log2(static_cast<double>(n));
+  // Prefix sums, and the pairwise tests within cells they imply.
   double tests = 0;
-  for (const GridLevel& g : levels)
+  for (GridLevel& g : levels)
     for (std::size_t c = 0; c < g.cells(); ++c) {
-      const double k = g.first[c + 1] - g.first[c];
+      const double k = g.first[c + 1];
       tests += k * k / 2;
+      g.first[c + 1] += g.first[c];
     }
   std::vector<char> occupied(levels.size(), 0);
   std::size_t top = 0;  // the highest level with boxes
@@ -160,62 +166,141 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
       occupied[l] = 1;
       top = l;
     }
-  for (std::size_t i = 0; i < n && tests <= budget && top > 0; ++i)
-    for (std::size_t l = level_of[i] + 1u; l <= top; ++l)
-      if (occupied[l])
-        for_cells(levels[l], range(levels[l], boxes[i]),
-                  [&](std::size_t c) { tests += levels[l].first[c + 1] - levels[l].first[c]; });
+  // Decline when the pairwise tests would cost more than the segment tree: boxes crowding
+  // the cells of one level, or small boxes under many large ones. A test is a few
+  // comparisons on contiguous data; measured on the EMBER pairs, 40 n log2 n of them still
+  // take less time than CGAL's segment tree on the same boxes.
+  const double budget = 40 * static_cast<double>(n) * std::log2(static_cast<double>(n));
+  if (tests <= budget && top > 0)
+    tests += tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, n, 4096), 0.0,
+        [&](const tbb::blocked_range<std::size_t>& r, double sum) {
+          for (std::size_t i = r.begin(); i < r.end(); ++i)
+            for (std::size_t l = level_of[i] + 1u; l <= top; ++l)
+              if (occupied[l])
+                for_cells(levels[l], range(levels[l], boxes[i]),
+                          [&](std::size_t c) { sum += levels[l].first[c + 1] - levels[l].first[c]; });
+          return sum;
+        },
+        std::plus<double>());
   if (tests > budget) return false;
+  // Each cell's boxes by index; on the coarser levels also as contiguous copies of their
+  // coordinates, which the finer boxes beneath them read in order (level 0, most of the
+  // entries, is gathered one cell at a time below).
+  struct Entry {
+    double lo[3], hi[3];
+    int info;
+  };
+  auto entry_of = [&](std::size_t i) {
+    Entry e;
+    for (int k = 0; k < 3; ++k) {
+      e.lo[k] = boxes[i].min_coord(k);
+      e.hi[k] = boxes[i].max_coord(k);
+    }
+    e.info = boxes[i].info();
+    return e;
+  };
+  std::vector<std::vector<std::uint32_t>> member(levels.size());
+  std::vector<std::vector<Entry>> entries(levels.size());
   {
     std::vector<std::vector<std::uint32_t>> fill(levels.size());
     for (std::size_t l = 0; l < levels.size(); ++l) {
-      levels[l].member.resize(levels[l].first.back());
+      member[l].resize(levels[l].first.back());
+      if (l > 0) entries[l].resize(levels[l].first.back());
       fill[l].assign(levels[l].first.begin(), levels[l].first.end() - 1);
     }
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
       for (std::size_t i = r.begin(); i < r.end(); ++i) {
-        GridLevel& g = levels[level_of[i]];
-        std::vector<std::uint32_t>& f = fill[level_of[i]];
-        for_cells(g, range(g, boxes[i]), [&](std::size_t c) {
-          g.member[std::atomic_ref<std::uint32_t>(f[c]).fetch_add(1, std::memory_order_relaxed)] =
-              static_cast<std::uint32_t>(i);
+        const std::size_t l = level_of[i];
+        std::vector<std::uint32_t>& f = fill[l];
+        for_cells(levels[l], range_of[i], [&](std::size_t c) {
+          const std::uint32_t slot = std::atomic_ref<std::uint32_t>(f[c]).fetch_add(1, std::memory_order_relaxed);
+          member[l][slot] = static_cast<std::uint32_t>(i);
+          if (l > 0) entries[l][slot] = entry_of(i);
         });
       }
     });
   }
-  // Reports a and b when they overlap and the minimum corner of their intersection lies in
-  // cell c of level g.
-  auto test = [&](const GridLevel& g, std::size_t c, const Box& a, const Box& b) {
-    int corner[3];
-    for (int k = 0; k < 3; ++k) {
-      if (!(a.min_coord(k) <= b.max_coord(k) && b.min_coord(k) <= a.max_coord(k))) return;
-      corner[k] = cell(g, std::max(a.min_coord(k), b.min_coord(k)), k);
-    }
-    if (g.index(corner[0], corner[1], corner[2]) != c) return;
-    const int i = a.info(), j = b.info();
-    if (i != j) visit(std::min(i, j), std::max(i, j));
+  range_of = {};
+  // Reports the pair of triangles i and j, whose boxes overlap with their intersection's
+  // minimum corner at (x, y, z), when that corner lies in cell c of level g.
+  auto report = [&](const GridLevel& g, std::size_t c, double x, double y, double z, int i, int j) {
+    if (i != j && g.index(cell(g, x, 0), cell(g, y, 1), cell(g, z, 2)) == c) visit(std::min(i, j), std::max(i, j));
   };
-  // Pairs on one level.
-  for (const GridLevel& g : levels)
-    if (g.first.back() > 1)
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, g.cells(), 256),
-                        [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t c = r.begin(); c < r.end(); ++c)
-                            for (std::uint32_t p = g.first[c]; p < g.first[c + 1]; ++p)
-                              for (std::uint32_t q = p + 1; q < g.first[c + 1]; ++q)
-                                test(g, c, boxes[g.member[p]], boxes[g.member[q]]);
-                        });
+  auto overlap = [](const Entry& a, const Entry& b) {
+    return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
+           a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
+  };
+  // Pairs on one level, a cell at a time: its boxes gathered into one array per coordinate,
+  // each box tested against the later ones without branches, the overlapping ones listed.
+  struct CellBoxes {
+    std::vector<double> lo[3], hi[3];
+    std::vector<int> info;
+    std::vector<std::uint32_t> hit;
+  };
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    const GridLevel& g = levels[l];
+    if (g.first.back() < 2) continue;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, g.cells(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+      CellBoxes cb;
+      for (std::size_t c = r.begin(); c < r.end(); ++c) {
+        const std::uint32_t* m = member[l].data() + g.first[c];
+        const std::size_t k = g.first[c + 1] - g.first[c];
+        if (k < 2) continue;
+        if (cb.hit.size() < k) {
+          for (int d = 0; d < 3; ++d) {
+            cb.lo[d].resize(k);
+            cb.hi[d].resize(k);
+          }
+          cb.info.resize(k);
+          cb.hit.resize(k);
+        }
+        for (std::size_t t = 0; t < k; ++t) {
+          const Box& b = boxes[m[t]];
+          for (int d = 0; d < 3; ++d) {
+            cb.lo[d][t] = b.min_coord(d);
+            cb.hi[d][t] = b.max_coord(d);
+          }
+          cb.info[t] = b.info();
+        }
+        const double *lo0 = cb.lo[0].data(), *lo1 = cb.lo[1].data(), *lo2 = cb.lo[2].data();
+        const double *hi0 = cb.hi[0].data(), *hi1 = cb.hi[1].data(), *hi2 = cb.hi[2].data();
+        std::uint32_t* hit = cb.hit.data();
+        for (std::size_t p = 0; p + 1 < k; ++p) {
+          const double a0 = lo0[p], a1 = lo1[p], a2 = lo2[p], b0 = hi0[p], b1 = hi1[p], b2 = hi2[p];
+          std::size_t hits = 0;
+          for (std::size_t q = p + 1; q < k; ++q) {
+            const bool meet = (a0 <= hi0[q]) & (lo0[q] <= b0) & (a1 <= hi1[q]) & (lo1[q] <= b1) & (a2 <= hi2[q]) &
+                              (lo2[q] <= b2);
+            hit[hits] = static_cast<std::uint32_t>(q);
+            hits += meet;
+          }
+          for (std::size_t h = 0; h < hits; ++h) {
+            const std::size_t q = hit[h];
+            report(g, c, std::max(a0, lo0[q]), std::max(a1, lo1[q]), std::max(a2, lo2[q]), cb.info[p], cb.info[q]);
+          }
+        }
+      }
+    });
+  }
   // Pairs across levels: each box against the boxes of every higher level in its cells there.
   if (top > 0)
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t i = r.begin(); i < r.end(); ++i)
+      for (std::size_t i = r.begin(); i < r.end(); ++i) {
+        if (level_of[i] >= top) continue;
+        const Entry a = entry_of(i);
         for (std::size_t l = level_of[i] + 1u; l <= top; ++l) {
           if (!occupied[l]) continue;
           const GridLevel& g = levels[l];
+          const std::vector<Entry>& e = entries[l];
           for_cells(g, range(g, boxes[i]), [&](std::size_t c) {
-            for (std::uint32_t p = g.first[c]; p < g.first[c + 1]; ++p) test(g, c, boxes[i], boxes[g.member[p]]);
+            for (std::uint32_t p = g.first[c]; p < g.first[c + 1]; ++p)
+              if (overlap(a, e[p]))
+                report(g, c, std::max(a.lo[0], e[p].lo[0]), std::max(a.lo[1], e[p].lo[1]),
+                       std::max(a.lo[2], e[p].lo[2]), a.info, e[p].info);
           });
         }
+      }
     });
   return true;
 }
