@@ -1,13 +1,16 @@
 #include "stages/4_intersection_graph.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
 #include <type_traits>
 
+#include <tritri/implicit_point.h>
 #include <tritri/location.h>
 
 #include "models/double_model.h"
@@ -40,12 +43,20 @@ void group(std::vector<std::vector<Entry>>& parts, std::size_t keys, std::vector
   for (const auto& part : parts)
     for (const Entry& x : part) ++count[x[0]];
   lists.assign(keys, {});
-  for (std::size_t k = 0; k < keys; ++k)
+  tbb::parallel_for(std::size_t{0}, keys, [&](std::size_t k) {  // the allocations, in parallel
     if (count[k]) lists[k].reserve(count[k]);
-  for (auto& part : parts) {
-    for (const Entry& x : part) lists[x[0]].push_back(value(x));
-    std::vector<Entry>().swap(part);
-  }
+  });
+  // Filled by blocks of keys, one task each: every task reads all entries and appends
+  // those of its keys (cheap sequential reads; the scattered appends, which cost, are
+  // split). Each list gets its entries in part order, as one thread would.
+  const std::size_t blocks = std::min<std::size_t>(keys, tbb::this_task_arena::max_concurrency());
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    const std::size_t first = b * keys / blocks, last = (b + 1) * keys / blocks;
+    for (const auto& part : parts)
+      for (const Entry& x : part)
+        if (static_cast<std::size_t>(x[0]) - first < last - first) lists[x[0]].push_back(value(x));
+  });
+  for (auto& part : parts) std::vector<Entry>().swap(part);
   tbb::parallel_for(std::size_t{0}, keys, [&](std::size_t k) {
     if (count[k] > 1) sort_unique(lists[k]);
   });
@@ -160,7 +171,6 @@ BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::ve
     concatenate(per_chunk, named);
   }
   tbb::parallel_sort(named.begin(), named.end());
-  named.erase(std::unique(named.begin(), named.end()), named.end());
   std::vector<PointName> names;
   std::vector<LpiKey> keys;
   for (const auto& [name, lpi] : named)
@@ -186,22 +196,39 @@ BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::ve
     const int c = compare(a, b);
     return c != 0 ? c < 0 : a < b;
   });
+  // Runs of equal points from the comparisons of neighbours in the order (in parallel; an
+  // exact total order makes equality transitive).
+  std::vector<char> same_as_previous(order.size(), 0);
+  tbb::parallel_for(std::size_t{1}, order.size(),
+                    [&](std::size_t i) { same_as_previous[i] = compare(order[i - 1], order[i]) == 0; });
+  // Each run handled by the task holding its first element (runs never overlap).
   std::vector<int> representative(keys.size());
-  for (std::size_t i = 0; i < order.size();) {
-    std::size_t j = i + 1;
-    while (j < order.size() && compare(order[i], order[j]) == 0) ++j;
-    int rep = order[i];
-    for (std::size_t k = i; k < j; ++k) rep = std::min(rep, order[k]);
-    for (std::size_t k = i; k < j; ++k) representative[order[k]] = rep;
-    i = j;
-  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, order.size()), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i < r.end(); ++i) {
+      if (same_as_previous[i]) continue;
+      std::size_t j = i + 1;
+      while (j < order.size() && same_as_previous[j]) ++j;
+      int rep = order[i];
+      for (std::size_t k = i; k < j; ++k) rep = std::min(rep, order[k]);
+      for (std::size_t k = i; k < j; ++k) representative[order[k]] = rep;
+    }
+  });
 
   // 3. New points that coincide with an input vertex become that vertex: the vertices
   // sorted in the same exact order, each new point looked up (grids put many vertices at
   // exactly the x of a new point, where xyz order would need exact arithmetic).
   std::vector<int> final_id(keys.size(), -1);
-  g.points.reserve(V.size());
-  for (const auto& v : V) g.points.push_back(M::explicit_point(v));
+  // Points are copied in parallel where that is safe: tritri's implicit points share
+  // immutable data through atomic reference counts; CGAL's lazy points (the exact model)
+  // are copied by one thread.
+  constexpr bool kParallelCopy = std::is_same_v<Point, tritri::ImplicitPoint>;
+  if constexpr (kParallelCopy) {
+    g.points.resize(V.size());
+    tbb::parallel_for(std::size_t{0}, V.size(), [&](std::size_t v) { g.points[v] = M::explicit_point(V[v]); });
+  } else {
+    g.points.reserve(V.size());
+    for (const auto& v : V) g.points.push_back(M::explicit_point(v));
+  }
   std::vector<int> by_position;
   std::vector<Key> vb;
   if (!keys.empty()) {
@@ -214,27 +241,45 @@ BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::ve
       return c != 0 ? c < 0 : a < b;  // (preprocessing merged equal vertices; deterministic anyway)
     });
   }
-  // Both sequences in one order: a merge finds every match.
+  // Both sequences in one order: a merge finds every match. In parallel, by pieces of
+  // `order`, each merged from the first vertex not before its first point.
   std::vector<int> vertex_match(keys.size(), -1);
-  for (std::size_t i = 0, v = 0; i < order.size() && v < by_position.size();) {
-    const int k = order[i], vid = by_position[v];
-    const int c = M::compare(g.points[vid], vb[vid], lpis[k], db[k]);
-    if (c < 0) {
-      ++v;
-    } else {
-      if (c == 0) vertex_match[k] = vid;
-      ++i;
-    }
-  }
+  auto vertex_before_point = [&](int vid, int k) { return M::compare(g.points[vid], vb[vid], lpis[k], db[k]) < 0; };
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, by_position.empty() ? 0 : order.size(), 4096),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      std::size_t v = static_cast<std::size_t>(
+                          std::lower_bound(by_position.begin(), by_position.end(), order[r.begin()],
+                                           vertex_before_point) -
+                          by_position.begin());
+                      for (std::size_t i = r.begin(); i < r.end() && v < by_position.size();) {
+                        const int k = order[i], vid = by_position[v];
+                        const int c = M::compare(g.points[vid], vb[vid], lpis[k], db[k]);
+                        if (c < 0) {
+                          ++v;
+                        } else {
+                          if (c == 0) vertex_match[k] = vid;
+                          ++i;
+                        }
+                      }
+                    });
+  std::vector<int> fresh;  // the keys that become new points, in id order
   for (std::size_t i = 0; i < keys.size(); ++i) {
     if (representative[i] != static_cast<int>(i)) continue;
     if (vertex_match[i] >= 0) {
       final_id[i] = vertex_match[i];
     } else {
-      final_id[i] = static_cast<int>(g.points.size());
-      g.points.push_back(lpis[i]);
-      ++g.new_points;
+      final_id[i] = static_cast<int>(V.size() + fresh.size());
+      fresh.push_back(static_cast<int>(i));
     }
+  }
+  g.new_points = fresh.size();
+  if constexpr (kParallelCopy) {
+    g.points.resize(V.size() + fresh.size());
+    tbb::parallel_for(std::size_t{0}, fresh.size(),
+                      [&](std::size_t k) { g.points[V.size() + k] = std::move(lpis[fresh[k]]); });
+  } else {
+    g.points.reserve(V.size() + fresh.size());
+    for (const int k : fresh) g.points.push_back(std::move(lpis[k]));
   }
   for (std::size_t i = 0; i < keys.size(); ++i) final_id[i] = final_id[representative[i]];
   // The new points in the order of the sort (triangulation looks TPIs up in it, with

@@ -221,12 +221,14 @@ inline std::vector<std::uint8_t> embedded_stars(std::span<const std::array<doubl
 
 // Whether triangles a and b (corner indices) share a vertex whose star is embedded, so that
 // they meet exactly in their shared vertices and edges.
+// Without branches on the comparisons: a box search calls this for every neighbour pair
+// (most of a clean mesh's box pairs), where early exits were mispredicted branches.
 inline bool share_embedded_star(const std::array<int, 3>& a, const std::array<int, 3>& b,
                                 std::span<const std::uint8_t> embedded) {
+  bool shared = false;
   for (int u : a)
-    if (u == b[0] || u == b[1] || u == b[2])
-      if (embedded[static_cast<std::size_t>(u)]) return true;
-  return false;
+    shared |= ((u == b[0]) | (u == b[1]) | (u == b[2])) & (embedded[static_cast<std::size_t>(u)] != 0);
+  return shared;
 }
 
 }  // namespace tritri
