@@ -28,7 +28,7 @@ in seconds, detect/load (issue 37's target: at most 3 on meshes with few interse
 peak MB; with --baseline the ratios new/base of the total, of each stage and of
 the peak memory (below 1: the new binary is faster / smaller); with --reference-omc, for
 T = 1 and 2, ours/OMC: our wall s over OpenMeshCraft's wall seconds from the table of
-../shared/docs/PERFORMANCE.md (whole process, as measured there; the target is at most 0.8).
+../shared/docs/PERFORMANCE.md (whole process, as measured there; the target is at most 0.5, issue 37).
 """
 import argparse
 import json
@@ -51,7 +51,7 @@ SHARED = REPO.parent / "shared"
 STAGES = ("load", "detect", "classify", "triangulate", "output")  # shown; the JSON has all
 ALL_STAGES = ("load", "preprocess", "detect", "classify", "triangulate", "output")
 COUNTS = ("out_vertices", "out_triangles", "lpi", "tpi", "intersecting_pairs")
-OMC_TARGET = 0.8
+OMC_TARGET = 0.5  # issue 37: twice as fast as OpenMeshCraft everywhere (was 0.8)
 # (name, kind): "shared" = a file under --meshes, "generated" = make_test_meshes output,
 # "ember" = a pair built by make_ember_pairs.py. Names match PERFORMANCE.md's rows.
 WORKLOADS = [("thingi10k/40509.stl", "shared"), ("trimesh/box.STL", "shared"),
