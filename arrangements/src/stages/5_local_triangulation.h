@@ -63,6 +63,28 @@ class LocalTriangulation {
   LocalTriangulation(tritri::Plane plane, int sign, const typename M::Vertex& origin)
       : plane_(plane), sign_(sign), origin_(origin) {}
 
+  // Starts over, as if newly constructed, keeping the containers' memory (split_triangle_of
+  // reuses one object per thread: allocations were about a tenth of triangulation's time).
+  void reset(tritri::Plane plane, int sign, const typename M::Vertex& origin) {
+    pts.clear();
+    off.clear();
+    tris.clear();
+    vtri.clear();
+    deg.clear();
+    on_edge.clear();
+    lines.clear();
+    plane_ = plane;
+    sign_ = sign;
+    origin_ = origin;
+    last_ = 0;
+    rng_ = kSeed;
+    side_of_.clear();
+    crossed_.clear();
+    ring_copy_.clear();
+    constraint_ = 0;
+    ring_.clear();
+  }
+
   int orient(int a, int b, int c) const {
     if ((on_edge[a] & on_edge[b] & on_edge[c]) || on_common_line(a, b, c)) return 0;
     return sign_ * tritri::to_int(M::orient2d_local(off[a], off[b], off[c], plane_));
@@ -120,7 +142,7 @@ class LocalTriangulation {
     detail::memory_checkpoint();
     ++constraint_;
     int cur = a, prev = -1;
-    std::vector<std::array<int, 2>> crossed;
+    std::vector<std::array<int, 2>>& crossed = crossed_;  // scratch kept across calls: no allocation per step
     while (cur != b) {
       int target = -1;
       crossed.clear();
@@ -129,7 +151,9 @@ class LocalTriangulation {
       // with no predicate: the line meets cur's ring in at most one vertex on each side,
       // and an edge from cur cannot pass beyond b.
       bool done = false;
-      const std::vector<int> ring = around(cur);
+      const std::vector<int>& ring_now = around(cur);  // copied: inserting crossings changes around()'s ring
+      ring_copy_.assign(ring_now.begin(), ring_now.end());
+      const std::vector<int>& ring = ring_copy_;
       for (int t : ring) {
         const LocalTriangle& T = tris[t];
         const int i = index_of(T, cur);
@@ -193,12 +217,15 @@ class LocalTriangulation {
   int sign_;
   typename M::Vertex origin_;
   int last_ = 0;
-  std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;
+  static constexpr std::uint64_t kSeed = 0x9E3779B97F4A7C15ull;
+  std::uint64_t rng_ = kSeed;
 
   bool has_line(int v, int line) const {
     return line >= 0 && std::binary_search(lines[v].begin(), lines[v].end(), line);
   }
   std::vector<std::pair<int, int>> side_of_;  // per vertex: (constraint_, its orient(a, b, v))
+  std::vector<std::array<int, 2>> crossed_;   // insert_constraint's scratch: the edges a step crosses
+  std::vector<int> ring_copy_;                // insert_constraint's scratch: the ring of its vertex
   int constraint_ = 0;                         // insert_constraint calls so far
 
   // Whether a, b and c lie on one recorded line: the shortest list is searched in the others.
