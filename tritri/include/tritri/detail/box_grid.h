@@ -99,10 +99,15 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
     h *= std::cbrt(cells / max_cells) * 1.01;
   }
   std::vector<GridLevel> levels;
+  bool capped = false;  // a level's cells per axis capped (1e6): then the levels do not nest
   auto add_level = [&] {
     const double hl = std::ldexp(h, static_cast<int>(levels.size()));
     GridLevel& g = levels.emplace_back();
-    for (int k = 0; k < 3; ++k) g.dim[k] = static_cast<int>(std::min(std::floor((hi[k] - lo[k]) / hl) + 1, 1e6));
+    for (int k = 0; k < 3; ++k) {
+      const double cells = std::floor((hi[k] - lo[k]) / hl) + 1;
+      capped |= cells > 1e6;
+      g.dim[k] = static_cast<int>(std::min(cells, 1e6));
+    }
     g.inv_h = 1 / hl;
   };
   // Monotone in x: a subtraction, a product by a positive constant, a clamp.
@@ -175,8 +180,13 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
   // l's fullest cell (a box meets at most 8 cells on every level above its own: the levels'
   // cells nest, h_l being h 2^l exactly, so a run of a cells along an axis becomes at most
   // a / 2 + 1 one level up); counted exactly only when that bound does not fit the budget.
+  // The levels nest when no axis was capped and each level's 1 / h is exactly half the one
+  // below (a normal double: no overflow or underflow at extreme scales); else no bound.
+  bool nested = !capped;
+  for (std::size_t l = 1; l < levels.size(); ++l)
+    nested &= std::isnormal(levels[l].inv_h) && levels[l].inv_h * 2 == levels[l - 1].inv_h;
   double bound = 0;
-  {
+  if (nested) {
     std::vector<double> below(levels.size() + 1, 0);  // below[l]: boxes on levels < l
     for (std::size_t i = 0; i < n; ++i) ++below[level_of[i] + 1u];
     for (std::size_t l = 1; l <= levels.size(); ++l) below[l] += below[l - 1];
@@ -187,7 +197,7 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
       bound += below[l] * 8 * fullest;
     }
   }
-  if (tests + bound <= budget)
+  if (nested && tests + bound <= budget)
     tests += bound;
   else if (tests <= budget && top > 0)
     tests += tbb::parallel_reduce(
