@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 #include <numeric>
+#include <type_traits>
 
 #include "arrangements/memory_budget.h"
 #include "models/double_model.h"
@@ -104,43 +105,27 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
   }
   info.new_tpi = new_tpis.size();
 
-  // Output in soup-triangle order; points renumbered in first-use order.
+  // Output in soup-triangle order; points renumbered in first-use order. Three passes, so
+  // that only integer work is serial: (1) in order, each soup triangle's first output
+  // triangle and its covers' label sets (the label table numbers new sets in order of
+  // first use); (2) in parallel, the triangles over graph point ids, their sources, label
+  // sets and covers; (3) in order, the first-use numbering of the points, then their
+  // copies in parallel.
   BasicOutputMesh<Point> out;
-  info.output_vertex.assign(g.points.size() + new_tpis.size(), -1);
-  auto emit = [&](Tri tr, int t, int label_set) {
-    for (int& v : tr) {
-      int& id = info.output_vertex[v];
-      if (id < 0) {
-        id = static_cast<int>(out.vertices.size());
-        out.vertices.push_back(v < static_cast<int>(g.points.size()) ? g.points[v] : new_tpis[v - g.points.size()]);
-      }
-      v = id;
-    }
-    out.triangles.push_back(tr);
-    out.source.push_back(soup.source[t]);
-    out.label_set.push_back(label_set);
-    if (info.keep_covers) info.emitted_by.push_back(t);
-  };
-  // Sized once: growth by doubling would hold the old and the new arrays at the peak.
-  std::size_t out_triangles = 0;
-  for (std::size_t t = 0; t < nF; ++t) out_triangles += busy[t] ? pieces[t].triangles.size() : 1;
-  out.triangles.reserve(out_triangles);
-  out.source.reserve(out_triangles);
-  out.label_set.reserve(out_triangles);
-  out.vertices.reserve(g.points.size() + new_tpis.size());
+  const std::size_t nP = g.points.size() + new_tpis.size();
+  std::vector<std::size_t> first_out(nF + 1, 0);
+  for (std::size_t t = 0; t < nF; ++t) first_out[t + 1] = first_out[t] + (busy[t] ? pieces[t].triangles.size() : 1);
+  const std::size_t out_triangles = first_out[nF];
   out.label_sets = soup.label_sets;
   LabelSetTable label_table(out.label_sets);
+  std::vector<std::vector<int>> cover_labels(nF);  // per soup triangle, per cover: its label set
+  std::vector<int> first_cover(nF, 0);              // into info.covers
   for (std::size_t t = 0; t < nF; ++t) {
-    const int ti = static_cast<int>(t);
-    if (!busy[t]) {
-      emit(soup.triangles[t], ti, soup.label_set[t]);
-      if (info.keep_covers) info.cover_of.push_back(-1);
-      continue;
-    }
-    Piece<Point> p = std::move(pieces[t]);  // freed once emitted (peak memory)
-    const int first_cover = static_cast<int>(info.covers.size());
+    if (!busy[t]) continue;
+    const Piece<Point>& p = pieces[t];
+    first_cover[t] = static_cast<int>(info.covers.size());
     if (info.keep_covers) info.covers.insert(info.covers.end(), p.covers.begin(), p.covers.end());
-    std::vector<int> cover_labels(p.covers.size());
+    cover_labels[t].resize(p.covers.size());
     for (std::size_t c = 0; c < p.covers.size(); ++c) {
       LabelSet merged;
       for (int u : p.covers[c]) {
@@ -149,15 +134,68 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
       }
       std::sort(merged.begin(), merged.end());
       merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
-      cover_labels[c] = label_table.index_of(std::move(merged));
+      cover_labels[t][c] = label_table.index_of(std::move(merged));
     }
-    for (std::size_t k = 0; k < p.triangles.size(); ++k) {
+  }
+  out.triangles.resize(out_triangles);
+  out.source.resize(out_triangles);
+  out.label_set.resize(out_triangles);
+  if (info.keep_covers) {
+    info.emitted_by.assign(out_triangles, -1);
+    info.cover_of.assign(out_triangles, -1);
+  }
+  tbb::parallel_for(std::size_t{0}, nF, [&](std::size_t t) {
+    const int ti = static_cast<int>(t);
+    std::size_t o = first_out[t];
+    if (!busy[t]) {
+      out.triangles[o] = soup.triangles[t];
+      out.source[o] = soup.source[t];
+      out.label_set[o] = soup.label_set[t];
+      if (info.keep_covers) {
+        info.emitted_by[o] = ti;
+        info.cover_of[o] = -1;
+      }
+      return;
+    }
+    Piece<Point> p = std::move(pieces[t]);  // freed once emitted (peak memory)
+    for (std::size_t k = 0; k < p.triangles.size(); ++k, ++o) {
       Tri tr = p.triangles[k];
       for (int& v : tr)
         if (v < 0) v = tpi_id[tpi_offset[t] + (-1 - v)];
-      emit(tr, ti, p.covered_by[k] < 0 ? soup.label_set[t] : cover_labels[p.covered_by[k]]);
-      if (info.keep_covers) info.cover_of.push_back(p.covered_by[k] < 0 ? -1 : first_cover + p.covered_by[k]);
+      const int cover = p.covered_by[k];
+      out.triangles[o] = tr;
+      out.source[o] = soup.source[t];
+      out.label_set[o] = cover < 0 ? soup.label_set[t] : cover_labels[t][static_cast<std::size_t>(cover)];
+      if (info.keep_covers) {
+        info.emitted_by[o] = ti;
+        info.cover_of[o] = cover < 0 ? -1 : first_cover[t] + cover;
+      }
     }
+  });
+  info.output_vertex.assign(nP, -1);
+  std::vector<int> point_of;  // output vertex -> graph point id (then TPI ids)
+  point_of.reserve(nP);
+  for (Tri& tr : out.triangles)
+    for (int& v : tr) {
+      int& id = info.output_vertex[v];
+      if (id < 0) {
+        id = static_cast<int>(point_of.size());
+        point_of.push_back(v);
+      }
+      v = id;
+    }
+  auto point = [&](int v) -> const Point& {
+    return v < static_cast<int>(g.points.size()) ? g.points[v] : new_tpis[v - g.points.size()];
+  };
+  // Copies in parallel where that is safe (see stage 4: tritri's implicit points share
+  // immutable data through atomic reference counts; CGAL's lazy points are copied by one
+  // thread).
+  if constexpr (std::is_same_v<Point, tritri::ImplicitPoint>) {
+    out.vertices.resize(point_of.size());
+    tbb::parallel_for(std::size_t{0}, point_of.size(), [&](std::size_t i) { out.vertices[i] = point(point_of[i]); });
+  } else {
+    out.vertices.reserve(point_of.size());
+    for (const int v : point_of) out.vertices.push_back(point(v));
   }
   if (scale_exponent != 0)
     tbb::parallel_for(std::size_t{0}, out.vertices.size(),
