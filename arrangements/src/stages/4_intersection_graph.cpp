@@ -218,9 +218,10 @@ BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::ve
   // sorted in the same exact order, each new point looked up (grids put many vertices at
   // exactly the x of a new point, where xyz order would need exact arithmetic).
   std::vector<int> final_id(keys.size(), -1);
-  // Points are copied in parallel where that is safe: tritri's implicit points share
-  // immutable data through atomic reference counts; CGAL's lazy points (the exact model)
-  // are copied by one thread.
+  // Points are copied in parallel for the double model, whose implicit points share
+  // immutable data through atomic reference counts and make most of this step's time; the
+  // exact model's CGAL points (also counted atomically, CGAL >= 5.5) are copied by one
+  // thread, as before, a path whose speed this does not measure.
   constexpr bool kParallelCopy = std::is_same_v<Point, tritri::ImplicitPoint>;
   if constexpr (kParallelCopy) {
     g.points.resize(V.size());

@@ -187,9 +187,8 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
   auto point = [&](int v) -> const Point& {
     return v < static_cast<int>(g.points.size()) ? g.points[v] : new_tpis[v - g.points.size()];
   };
-  // Copies in parallel where that is safe (see stage 4: tritri's implicit points share
-  // immutable data through atomic reference counts; CGAL's lazy points are copied by one
-  // thread).
+  // Copies in parallel for the double model's implicit points, by one thread for the exact
+  // model's CGAL points (as in stage 4).
   if constexpr (std::is_same_v<Point, tritri::ImplicitPoint>) {
     out.vertices.resize(point_of.size());
     tbb::parallel_for(std::size_t{0}, point_of.size(), [&](std::size_t i) { out.vertices[i] = point(point_of[i]); });

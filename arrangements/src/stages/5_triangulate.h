@@ -15,7 +15,8 @@
 // replaced by its pieces; a region covered by several coplanar triangles is emitted once,
 // by the smallest soup triangle covering it, labelled with the union of their label sets;
 // source maps back to the input numbering (TriangleSoup::source).
-// info (filled):
+// info (filled; pass a fresh, default-constructed one, with keep_covers and
+// per_triangle_only set as wanted):
 //   new_tpi         the TPIs created (crossings of two constraint segments inside a
 //                   triangle; distinct from each other and from every graph point,
 //                   compared exactly): the stats key `tpi`
