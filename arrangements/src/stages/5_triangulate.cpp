@@ -118,14 +118,15 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
   const std::size_t out_triangles = first_out[nF];
   out.label_sets = soup.label_sets;
   LabelSetTable label_table(out.label_sets);
-  std::vector<std::vector<int>> cover_labels(nF);  // per soup triangle, per cover: its label set
-  std::vector<int> first_cover(nF, 0);              // into info.covers
+  // Covers numbered over all soup triangles in order: first_cover[t] + c is cover c of t,
+  // in cover_label and (keep_covers; info arrives fresh) in info.covers.
+  std::vector<int> first_cover(nF, 0);
+  std::vector<int> cover_label;  // each cover's label set
   for (std::size_t t = 0; t < nF; ++t) {
+    first_cover[t] = static_cast<int>(cover_label.size());
     if (!busy[t]) continue;
     const Piece<Point>& p = pieces[t];
-    first_cover[t] = static_cast<int>(info.covers.size());
     if (info.keep_covers) info.covers.insert(info.covers.end(), p.covers.begin(), p.covers.end());
-    cover_labels[t].resize(p.covers.size());
     for (std::size_t c = 0; c < p.covers.size(); ++c) {
       LabelSet merged;
       for (int u : p.covers[c]) {
@@ -134,7 +135,7 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
       }
       std::sort(merged.begin(), merged.end());
       merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
-      cover_labels[t][c] = label_table.index_of(std::move(merged));
+      cover_label.push_back(label_table.index_of(std::move(merged)));
     }
   }
   out.triangles.resize(out_triangles);
@@ -151,10 +152,7 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
       out.triangles[o] = soup.triangles[t];
       out.source[o] = soup.source[t];
       out.label_set[o] = soup.label_set[t];
-      if (info.keep_covers) {
-        info.emitted_by[o] = ti;
-        info.cover_of[o] = -1;
-      }
+      if (info.keep_covers) info.emitted_by[o] = ti;  // cover_of: -1 already
       return;
     }
     Piece<Point> p = std::move(pieces[t]);  // freed once emitted (peak memory)
@@ -165,7 +163,7 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
       const int cover = p.covered_by[k];
       out.triangles[o] = tr;
       out.source[o] = soup.source[t];
-      out.label_set[o] = cover < 0 ? soup.label_set[t] : cover_labels[t][static_cast<std::size_t>(cover)];
+      out.label_set[o] = cover < 0 ? soup.label_set[t] : cover_label[static_cast<std::size_t>(first_cover[t] + cover)];
       if (info.keep_covers) {
         info.emitted_by[o] = ti;
         info.cover_of[o] = cover < 0 ? -1 : first_cover[t] + cover;
