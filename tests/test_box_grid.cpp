@@ -15,18 +15,30 @@
 // - edge cases (0, 1, 2 boxes, identical boxes, a point-like cluster plus one far triangle,
 //   point triangles, lattices scaled into the subnormals, dense tilings of cubes): accepted
 //   or declined, the answer is exact. overlapping_triangle_pairs equals brute force on every
-//   soup of this file.
+//   soup of this file;
+// - with keys (three ints per triangle: random values from a small range, one of them shared
+//   by neighbours in x order, some negative and unique), on every soup of this file: the grid
+//   (arenas of 1 and 2 threads; it accepts exactly when it does without keys) visits each
+//   brute-force pair whose keys share no value once, with i < j, and no other pair (the
+//   sharing decided here by std::find_first_of); so does tritri::for_each_overlapping_pair
+//   (threads 1, 2 and 0) where the grid accepts, while where it declines (CGAL's segment
+//   tree, keys a hint) it may also visit pairs whose keys share a value, at most once each.
 #include <gtest/gtest.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/task_arena.h>
 
 #include <tritri/box_pairs.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 #include <mutex>
+#include <numeric>
 #include <random>
+#include <span>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -92,6 +104,105 @@ GridRun run_grid(const Soup& s, int threads) {
   return run;
 }
 
+// Keys, three per triangle: one value shared by runs of 8 neighbours in the order of the
+// boxes' minimum x (so that overlapping pairs often share it), the others random in
+// 0 .. n / 3 or, one time in four, negative and held by no other key.
+std::vector<Tri> random_keys(const Soup& s) {
+  const int n = static_cast<int>(s.F.size());
+  std::mt19937_64 rng(seed_for(707) + s.F.size());
+  std::vector<double> xmin(s.F.size());
+  for (int t = 0; t < n; ++t) xmin[t] = std::min({s.V[s.F[t][0]][0], s.V[s.F[t][1]][0], s.V[s.F[t][2]][0]});
+  std::vector<int> order(s.F.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return xmin[a] < xmin[b]; });
+  std::vector<Tri> keys(s.F.size());
+  const auto range = static_cast<unsigned>(n / 3 + 1);
+  for (int r = 0; r < n; ++r) {
+    const int t = order[r], spatial = static_cast<int>(rng() % 3);
+    for (int k = 0; k < 3; ++k)
+      keys[t][k] = k == spatial ? r / 8 : (rng() % 4 == 0 ? -1 - (3 * t + k) : static_cast<int>(rng() % range));
+  }
+  return keys;
+}
+
+// Whether keys a and b share a value (the reference: not the header's share_key).
+bool keys_meet(const Tri& a, const Tri& b) {
+  return std::find_first_of(a.begin(), a.end(), b.begin(), b.end()) != a.end();
+}
+
+// The visits of one search among n triangles, each pair i < j counted: in a byte per pair
+// (row by row of the upper triangle) when most pairs are expected, else in lists per thread,
+// sorted at the end. Visits with i >= j or out of range are counted apart. add() is
+// thread-safe.
+class VisitLog {
+ public:
+  VisitLog(std::size_t n, bool dense) : n_(n), dense_(dense), count_(dense ? n * (n - (n > 0)) / 2 : 0, 0) {}
+  void add(int i, int j) {
+    if (i < 0 || i >= j || static_cast<std::size_t>(j) >= n_)
+      bad_.fetch_add(1, std::memory_order_relaxed);
+    else if (dense_)
+      std::atomic_ref<std::uint8_t>(count_[slot(i, j)]).fetch_add(1, std::memory_order_relaxed);
+    else
+      lists_.local().emplace_back(i, j);
+  }
+  long long visits() const {
+    long long v = bad_ + std::accumulate(count_.begin(), count_.end(), 0LL);
+    for (const Pairs& l : lists_) v += static_cast<long long>(l.size());
+    return v;
+  }
+  // "" when every pair of `must` was visited once, every other pair of `allowed` at most once
+  // and no other pair (both sorted, `must` within `allowed`).
+  std::string differences(const Pairs& must, const Pairs& allowed) const {
+    long long missed = 0, extra = 0, repeated = 0;
+    std::ostringstream first;
+    auto note = [&](long long& what, std::size_t i, std::size_t j, int times) {
+      if (missed + extra + repeated == 0) first << " e.g. (" << i << ", " << j << ") visited " << times << " times";
+      ++what;
+    };
+    if (dense_) {
+      std::vector<std::uint8_t> wanted(count_.size(), 0);  // 1: must, 2: allowed
+      for (const auto& [i, j] : allowed) wanted[slot(i, j)] = 2;
+      for (const auto& [i, j] : must) wanted[slot(i, j)] = 1;
+      for (std::size_t i = 0, p = 0; i < n_; ++i)
+        for (std::size_t j = i + 1; j < n_; ++j, ++p) {
+          const int c = count_[p], w = wanted[p];
+          if (c > 1 && w > 0) note(repeated, i, j, c);
+          if (c == 0 && w == 1) note(missed, i, j, c);
+          if (c > 0 && w == 0) note(extra, i, j, c);
+        }
+    } else {
+      Pairs got, once;
+      for (const Pairs& l : lists_) got.insert(got.end(), l.begin(), l.end());
+      std::sort(got.begin(), got.end());
+      for (std::size_t k = 0, e = 0; k < got.size(); k = e) {
+        while (e < got.size() && got[e] == got[k]) ++e;  // got[k .. e) one pair
+        const auto [i, j] = got[k];
+        if (!std::binary_search(allowed.begin(), allowed.end(), got[k]))
+          note(extra, i, j, static_cast<int>(e - k));
+        else if (e - k > 1)
+          note(repeated, i, j, static_cast<int>(e - k));
+        once.push_back(got[k]);
+      }
+      Pairs lost;
+      std::set_difference(must.begin(), must.end(), once.begin(), once.end(), std::back_inserter(lost));
+      for (const auto& [i, j] : lost) note(missed, i, j, 0);
+    }
+    if (missed + extra + repeated + bad_ == 0) return "";
+    std::ostringstream out;
+    out << "missed " << missed << ", extra " << extra << ", repeated " << repeated << ", not i < j " << bad_
+        << first.str();
+    return out.str();
+  }
+
+ private:
+  std::size_t slot(std::size_t i, std::size_t j) const { return i * (2 * n_ - i - 1) / 2 + (j - i - 1); }
+  std::size_t n_;
+  bool dense_;
+  std::vector<std::uint8_t> count_;
+  tbb::enumerable_thread_specific<Pairs> lists_;
+  std::atomic<long long> bad_{0};
+};
+
 enum class Expect { kAccept, kDecline, kEither };
 
 // The grid in arenas of 1 and 2 threads, then the public function with 1, 2 and all threads,
@@ -123,6 +234,42 @@ void check(const Soup& s, Expect expect) {
     const Pairs got = tritri::overlapping_triangle_pairs(s.V, s.F, threads);
     EXPECT_TRUE(got == expected) << "overlapping_triangle_pairs, threads " << threads << ": missed "
                                  << missing(expected, got) << "; extra " << missing(got, expected);
+  }
+  // With keys: the same pairs less those whose keys share a value.
+  const std::vector<Tri> keys = random_keys(s);
+  Pairs want;
+  for (const auto& [i, j] : expected)
+    if (!keys_meet(keys[i], keys[j])) want.emplace_back(i, j);
+  if (expected.size() >= 100) {  // the keys filter some pairs, not all
+    EXPECT_GT(want.size(), 0u) << "every pair shares a key";
+    EXPECT_LT(want.size(), expected.size()) << "no pair shares a key";
+  }
+  const std::size_t n = s.F.size();
+  const bool dense = want.size() > n * n / 32;  // then a byte per pair costs less than sorting
+  const std::vector<Box> boxes = triangle_boxes(s.V, s.V, s.F);
+  for (int threads : {1, 2}) {
+    VisitLog log(n, dense);
+    bool keyed_accepted = false;
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+      keyed_accepted = visit_pairs_in_grid(boxes, [&log](int i, int j) { log.add(i, j); }, std::span<const Tri>(keys));
+    });
+    EXPECT_EQ(keyed_accepted, accepted) << "keys changed the grid's decision, arena of " << threads;
+    if (keyed_accepted)
+      EXPECT_EQ(log.differences(want, want), "") << "the grid with keys, arena of " << threads;
+    else
+      EXPECT_EQ(log.visits(), 0) << "the grid with keys declined after visiting pairs, arena of " << threads;
+  }
+  // for_each_overlapping_pair: the same where the grid accepts; where it declines, CGAL's
+  // segment tree may also visit pairs whose keys share a value (box_pairs.h: there the keys
+  // are a hint), each at most once.
+  const Pairs& allowed = accepted ? want : expected;
+  for (int threads : {1, 2, 0}) {
+    VisitLog log(n, dense);
+    tritri::for_each_overlapping_pair(
+        std::span<const Vec3>(s.V), std::span<const Tri>(s.F), threads, {}, [&log](int i, int j) { log.add(i, j); },
+        std::span<const Tri>(keys));
+    EXPECT_EQ(log.differences(want, allowed), "") << "for_each_overlapping_pair with keys, threads " << threads;
   }
 }
 

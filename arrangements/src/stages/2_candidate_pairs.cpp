@@ -81,18 +81,24 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
   const VertexBoxes<M> boxes(V);
   // Every triangle's extents along 10 diagonal directions (tritri/direction_slabs.h; rational
   // points: from their certified boxes), a certified test after the boxes' that rejects most
-  // box pairs of long thin triangles.
-  std::vector<tritri::DirectionSlabs> slabs;
-  const std::span<const Vec3> lo = boxes.lo_span, hi = boxes.hi_span;  // doubles: both are V
-  arena.execute([&] { slabs = tritri::triangle_slabs(lo, hi, F); });
+  // box pairs of long thin triangles. Computed on first use: on a clean mesh most triangles
+  // are in no pair that reaches the test.
+  const tritri::TriangleSlabsOnDemand slabs(boxes.lo_span, boxes.hi_span, F);
   // Doubles: vertices whose star is embedded (tritri/embedded_stars.h) settle every pair of
-  // their neighbours at once, before the slabs; on a clean mesh that is almost every box pair.
+  // their neighbours at once; on a clean mesh that is almost every box pair. The search skips
+  // most of them itself (keys: the corners, the unembedded ones unique), in the grid's cells
+  // where the keys sit beside the boxes; visit settles the others after the slabs (where the
+  // grid declines, on crowded inputs, most pairs are apart by their slabs).
   std::vector<std::uint8_t> embedded;
-  if constexpr (std::is_same_v<Vertex, Vec3>) embedded = tritri::embedded_stars(V, F, threads);
+  std::vector<std::array<int, 3>> keys;
+  if constexpr (std::is_same_v<Vertex, Vec3>) {
+    embedded = tritri::embedded_stars(V, F, threads);
+    keys = tritri::embedded_corner_keys(F, embedded);
+  }
   auto visit = [&](int i, int j) {
+    if (slabs.apart(static_cast<std::size_t>(i), static_cast<std::size_t>(j))) return;
     if constexpr (std::is_same_v<Vertex, Vec3>)
       if (tritri::share_embedded_star(F[i], F[j], embedded)) return;
-    if (tritri::apart_by_slabs(F[i], F[j], slabs[i], slabs[j])) return;
     detail::memory_checkpoint();
     Found& local = found.local();
     ++local.box_pairs;
@@ -116,7 +122,7 @@ BasicDetectedPairs<M> detect_pairs(const std::vector<typename M::Vertex>& V, con
   // (tritri/hub_pairs.h: a fan of n triangles makes O(n) pairs, not n^2 / 2); rational
   // points: every box pair of their certified intervals.
   if constexpr (std::is_same_v<Vertex, Vec3>)
-    tritri::for_each_candidate_pair(std::span<const Vec3>(V), F, threads, polygon, visit);
+    tritri::for_each_candidate_pair(std::span<const Vec3>(V), F, threads, polygon, visit, keys);
   else
     tritri::for_each_overlapping_pair(boxes.lo_span, boxes.hi_span, F, threads, polygon, visit);
 

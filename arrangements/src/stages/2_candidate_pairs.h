@@ -25,14 +25,17 @@
 // tritri::for_each_overlapping_pair on the certified intervals of rational points.
 // Neighbours (doubles): a box pair of triangles sharing a vertex whose star is embedded
 // (tritri/embedded_stars.h: the fan around it, in one projection, turns once around it, so
-// its triangles meet only in what they share) is settled before anything else. On a clean
-// mesh that is every vertex, and neighbours are almost all box pairs (bunny, 75 k
-// triangles: 466 k of 472 k); a few orient2d per corner replace a pairwise test per pair.
-// Broad phase: a box pair of triangles that share no corner is dropped when their extents
-// along 10 diagonal directions are apart (tritri::apart_by_slabs, tritri/direction_slabs.h:
-// a certified test, such triangles do not meet; rational points: from their certified
-// boxes). Long thin triangles lying across their boxes' diagonals make most box pairs:
-// EMBER 79741+65004 has 16.7 M box pairs, of which 0.45 M are kept.
+// its triangles meet only in what they share) is settled at once. On a clean mesh that is
+// every vertex, and neighbours are almost all box pairs (bunny, 75 k triangles: 466 k of
+// 472 k); a few orient2d per corner replace a pairwise test per pair. The grid search skips
+// them itself (tritri::embedded_corner_keys: keys beside the boxes in its cells), so they
+// cost no visit; the other searches leave them to the visit, after the slabs.
+// Broad phase: a box pair is dropped when the triangles' extents along 10 diagonal
+// directions are apart (tritri::TriangleSlabsOnDemand, tritri/direction_slabs.h: a
+// certified test, such triangles do not meet; computed per triangle on first use; rational
+// points: from their certified boxes). Long thin triangles lying across their boxes'
+// diagonals make most box pairs: EMBER 79741+65004 has 16.7 M box pairs, of which 0.45 M
+// are kept.
 // Early-outs, as each pair is found (in parallel; stages/2_early_outs.h, which
 // check_arrangement shares):
 //   - neighbours (a shared vertex or edge by index) that provably meet only in what they
@@ -56,8 +59,9 @@
 // exact orient3d, exactly zero where parts touch in a plane, costs far more than orient2d).
 // Exact: every decision is an exact sign. The result does not depend on `threads`.
 // Cost: the search (tritri/box_pairs.h, hub_pairs.h) plus O(1) per pair, and O(n) for the
-// stars; memory: 128 bytes per triangle (planes and slabs), 8 per corner while the stars are
-// certified, plus the pairs kept (usually a small fraction of the box pairs).
+// stars; memory: 44 bytes per triangle (planes, keys), 96 per triangle whose slabs are used,
+// 8 per corner while the stars are certified, plus the pairs kept (usually a small fraction
+// of the box pairs).
 //
 // candidate_pairs(V, F, threads = 0, polygon = {}): the box pairs alone, as a sorted list
 // (tritri::overlapping_triangle_pairs), for tests and tools that want them.

@@ -84,8 +84,10 @@ inline std::vector<Box> triangle_boxes(std::span<const std::array<double, 3>> Vl
 // earlier boxes whose x-extent reaches its first xmin (no other earlier box can meet it),
 // so each pair is found by exactly one task. (CGAL's own Parallel_tag splits both ranges
 // into 4 x 4 copies; measured on 2 cores it did twice the work of the sequential call.)
+// keys: as for_each_overlapping_pair (used by the grid only).
 template <class Visit>
-void visit_overlapping_pairs(std::vector<Box>& boxes, int workers, const Visit& visit) {
+void visit_overlapping_pairs(std::vector<Box>& boxes, int workers, const Visit& visit,
+                             std::span<const std::array<int, 3>> keys = {}) {
   auto report = [&visit](const Box& a, const Box& b) {
     const int i = a.info(), j = b.info();
     if (i != j) visit(std::min(i, j), std::max(i, j));
@@ -94,7 +96,7 @@ void visit_overlapping_pairs(std::vector<Box>& boxes, int workers, const Visit& 
   constexpr std::ptrdiff_t cutoff = 10;  // CGAL's default: below it, boxes are compared pairwise
   constexpr auto closed = CGAL::Box_intersection_d::CLOSED;
   constexpr std::size_t kMinChunk = 2048;         // below this, splitting costs more than it saves
-  if (visit_pairs_in_grid(boxes, visit)) return;  // the grid hierarchy when that is cheap
+  if (visit_pairs_in_grid(boxes, visit, keys)) return;  // the grid hierarchy when that is cheap
   const std::size_t chunks = std::min<std::size_t>(4 * static_cast<std::size_t>(workers), boxes.size() / kMinChunk);
   if (workers <= 1 || chunks <= 1) {
     CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), report, traits, cutoff, closed);
@@ -220,22 +222,31 @@ void visit_overlapping_pairs_with_groups(const std::vector<Box>& boxes, std::spa
 
 }  // namespace detail::box_pairs
 
-// for_each_overlapping_pair(V, F, threads, group, visit): the same search without the
-// list: visit(i, j) (i < j, const, callable from several threads at once) is called once
+// for_each_overlapping_pair(V, F, threads, group, visit, keys = {}): the same search without
+// the list: visit(i, j) (i < j, const, callable from several threads at once) is called once
 // for every pair that overlapping_triangle_pairs would return, in no particular order.
 // For callers that filter or classify pairs as they are found, so that millions of
 // candidate pairs are never stored. Same preconditions, exactness and search cost.
+// keys: empty, or three ints per triangle: a hint that pairs whose keys share a value need
+// no visit (e.g. tritri::embedded_corner_keys: triangles meeting at an embedded vertex). The
+// grid skips them in its cells, where it holds the keys beside the boxes, so on a clean
+// mesh, where such pairs are nearly all box pairs, they cost no visit; the other searches
+// (the segment tree of crowded inputs, the groups) visit them, as a lookup per pair would
+// cost more there than it saves. So visit still sees some of them and must settle them.
 // With Vlo, Vhi in place of V: vertices known only to lie in a box each (points with
 // rational coordinates and their certified intervals); pairs of triangles whose boxes
 // (of their corners' boxes) overlap.
 template <class Visit>
 void for_each_overlapping_pair(std::span<const std::array<double, 3>> Vlo, std::span<const std::array<double, 3>> Vhi,
                                std::span<const std::array<int, 3>> F, int threads,
-                               std::span<const std::int64_t> group, const Visit& visit) {
+                               std::span<const std::int64_t> group, const Visit& visit,
+                               std::span<const std::array<int, 3>> keys = {}) {
   using namespace detail::box_pairs;
   if (!group.empty() && group.size() != F.size())
     throw std::invalid_argument(
         "tritri::overlapping_triangle_pairs: group must be empty or have one entry per triangle");
+  if (!keys.empty() && keys.size() != F.size())
+    throw std::invalid_argument("tritri::for_each_overlapping_pair: keys must be empty or have one entry per triangle");
   if (F.size() < 2) return;
   std::vector<Box> boxes = triangle_boxes(Vlo, Vhi, F);
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
@@ -244,14 +255,15 @@ void for_each_overlapping_pair(std::span<const std::array<double, 3>> Vlo, std::
     if (groups)
       visit_overlapping_pairs_with_groups(boxes, group, arena.max_concurrency(), visit);
     else
-      visit_overlapping_pairs(boxes, arena.max_concurrency(), visit);
+      visit_overlapping_pairs(boxes, arena.max_concurrency(), visit, keys);
   });
 }
 
 template <class Visit>
 void for_each_overlapping_pair(std::span<const std::array<double, 3>> V, std::span<const std::array<int, 3>> F,
-                               int threads, std::span<const std::int64_t> group, const Visit& visit) {
-  for_each_overlapping_pair(V, V, F, threads, group, visit);
+                               int threads, std::span<const std::int64_t> group, const Visit& visit,
+                               std::span<const std::array<int, 3>> keys = {}) {
+  for_each_overlapping_pair(V, V, F, threads, group, visit, keys);
 }
 
 // The same with a box per vertex (Vlo, Vhi: lower and upper bounds of each coordinate, e.g.

@@ -11,6 +11,7 @@
 //   slabs_apart(s, t)    // true: apart along one direction, so the triangles do not meet
 //   apart_by_slabs(a, b, s, t)   // the same for triangles a, b (corner indices) sharing no corner
 //   triangle_slabs(Vlo, Vhi, F)   // every triangle's slabs, in parallel
+//   TriangleSlabsOnDemand slabs(Vlo, Vhi, F); slabs.apart(i, j)   // each computed on first use
 // Exactness: a certified filter. Each extent is computed in double arithmetic and widened
 // by 2^-50 (|x| + |y| + |z|) + 2^-1074 of its point; this exceeds the rounding of the sum
 // of two or three coordinates plus that of the widening subtraction (at most 3 ulps of
@@ -26,10 +27,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -180,5 +184,62 @@ inline bool apart_by_slabs(const std::array<int, 3>& a, const std::array<int, 3>
   for (int v : a) share |= (v == b[0]) | (v == b[1]) | (v == b[2]);
   return !share && slabs_apart(sa, sb);
 }
+
+// The slabs of F's triangles (over vertex boxes, as triangle_slabs), each computed on its
+// first use and kept: for callers that test few of a mesh's triangles (after the box search
+// and the embedded stars of a clean mesh, a few per hundred), so the others cost nothing,
+// not even the pages of their slots. get() may be called from several threads at once: the
+// first caller of a triangle claims its slot (an atomic state), the others compute their own
+// copy meanwhile.
+class TriangleSlabsOnDemand {
+ public:
+  TriangleSlabsOnDemand(std::span<const std::array<double, 3>> Vlo, std::span<const std::array<double, 3>> Vhi,
+                        std::span<const std::array<int, 3>> F)
+      : Vlo_(Vlo),
+        Vhi_(Vhi),
+        F_(F),
+        slabs_(new DirectionSlabs[F.size()]),
+        state_(new std::atomic<std::uint8_t>[F.size()]()) {}
+
+  // slabs_apart for triangles i and j of F (never true for triangles that share a corner:
+  // their slabs hold it; the index test of apart_by_slabs would only cost their loads here).
+  bool apart(std::size_t i, std::size_t j) const {
+    DirectionSlabs si, sj;
+    return slabs_apart(get(i, si), get(j, sj));
+  }
+
+  // The slabs of triangle t: the stored ones, or computed into scratch.
+  const DirectionSlabs& get(std::size_t t, DirectionSlabs& scratch) const {
+    if (state_[t].load(std::memory_order_acquire) == kReady) [[likely]]
+      return slabs_[t];
+    return compute(t, scratch);
+  }
+
+ private:
+  enum : std::uint8_t { kEmpty, kWriting, kReady };
+
+  // The first use of triangle t (or a use while another thread stores it).
+#if defined(__GNUC__)
+  __attribute__((noinline))
+#endif
+  const DirectionSlabs& compute(std::size_t t, DirectionSlabs& scratch) const {
+    std::uint8_t state = state_[t].load(std::memory_order_acquire);
+    if (state == kReady) return slabs_[t];
+    const auto& f = F_[t];
+    scratch = Vlo_.data() == Vhi_.data()
+                  ? direction_slabs(Vlo_[f[0]], Vlo_[f[1]], Vlo_[f[2]])
+                  : direction_slabs({Vlo_[f[0]], Vlo_[f[1]], Vlo_[f[2]]}, {Vhi_[f[0]], Vhi_[f[1]], Vhi_[f[2]]});
+    if (state == kEmpty && state_[t].compare_exchange_strong(state, kWriting, std::memory_order_relaxed)) {
+      slabs_[t] = scratch;
+      state_[t].store(kReady, std::memory_order_release);
+    }
+    return scratch;
+  }
+
+  std::span<const std::array<double, 3>> Vlo_, Vhi_;
+  std::span<const std::array<int, 3>> F_;
+  std::unique_ptr<DirectionSlabs[]> slabs_;  // default-initialised: untouched until written
+  std::unique_ptr<std::atomic<std::uint8_t>[]> state_;
+};
 
 }  // namespace tritri

@@ -219,6 +219,22 @@ inline std::vector<std::uint8_t> embedded_stars(std::span<const std::array<doubl
   return embedded;
 }
 
+// Keys for tritri::for_each_overlapping_pair / for_each_candidate_pair that skip exactly
+// the pairs share_embedded_star settles: each triangle's corners, a corner whose star is not
+// embedded replaced by a value no other key holds (-1 - (3 t + k) for corner k of triangle t;
+// at most 2^31 / 3 triangles). Two triangles' keys share a value iff they share a vertex with
+// an embedded star.
+inline std::vector<std::array<int, 3>> embedded_corner_keys(std::span<const std::array<int, 3>> F,
+                                                            std::span<const std::uint8_t> embedded) {
+  std::vector<std::array<int, 3>> keys(F.size());
+  for (std::size_t t = 0; t < F.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int v = F[t][k];
+      keys[t][k] = embedded[static_cast<std::size_t>(v)] ? v : -1 - static_cast<int>(3 * t + k);
+    }
+  return keys;
+}
+
 // Whether triangles a and b (corner indices) share a vertex whose star is embedded, so that
 // they meet exactly in their shared vertices and edges.
 // Without branches on the comparisons: a box search calls this for every neighbour pair

@@ -1,11 +1,11 @@
 // tritri/hub_pairs.h
 //
-// for_each_candidate_pair(V, F, threads, group, visit): the candidate pairs of a triangle
+// for_each_candidate_pair(V, F, threads, group, visit, keys = {}): the candidate pairs of a triangle
 // mesh or soup without the pairwise enumeration of the triangles around a vertex of high
 // degree (a hub: the apex of a fan, a cylinder cap's centre, a cone's tip). Every box
 // around a hub holds the hub, so a box search pairs all of its n triangles: n^2 / 2 pairs
 // that, on a fan, meet only in the hub or a shared edge.
-//   V, F, threads, group  as for_each_overlapping_pair (tritri/box_pairs.h)
+//   V, F, threads, group, keys  as for_each_overlapping_pair (tritri/box_pairs.h)
 //   visit                 visit(i, j), i < j, const, callable from several threads at once
 // visit is called once for every pair (outside one group) of for_each_overlapping_pair,
 // except pairs of triangles around one hub whose directions from the hub are disjoint:
@@ -79,11 +79,14 @@ inline CGAL::Bbox_3 arc_box(const std::array<double, 3>& v, const std::array<dou
 // (See the top of this file.)
 template <class Visit>
 void for_each_candidate_pair(std::span<const std::array<double, 3>> V, std::span<const std::array<int, 3>> F,
-                             int threads, std::span<const std::int64_t> group, const Visit& visit) {
+                             int threads, std::span<const std::int64_t> group, const Visit& visit,
+                             std::span<const std::array<int, 3>> keys = {}) {
   using namespace detail::hub_pairs;
   using detail::box_pairs::Box;
   if (!group.empty() && group.size() != F.size())
     throw std::invalid_argument("tritri::for_each_candidate_pair: group must be empty or have one entry per triangle");
+  if (!keys.empty() && keys.size() != F.size())
+    throw std::invalid_argument("tritri::for_each_candidate_pair: keys must be empty or have one entry per triangle");
   std::vector<int> degree(V.size(), 0);
   for (const auto& t : F)
     for (int v : t) ++degree[static_cast<std::size_t>(v)];
@@ -105,7 +108,7 @@ void for_each_candidate_pair(std::span<const std::array<double, 3>> V, std::span
   double star_pairs = 0;
   for (std::size_t s : star_size) star_pairs += 0.5 * static_cast<double>(s) * static_cast<double>(s);
   if (!(star_pairs > static_cast<double>(F.size()))) {
-    for_each_overlapping_pair(V, F, threads, group, visit);
+    for_each_overlapping_pair(V, F, threads, group, visit, keys);
     return;
   }
   // The caller's group ids renumbered 0 .. G - 1, stars G + hub: no id can collide or
@@ -123,7 +126,7 @@ void for_each_candidate_pair(std::span<const std::array<double, 3>> V, std::span
     else if (!group.empty() && group[t] >= 0)
       groups[t] = std::lower_bound(ids.begin(), ids.end(), group[t]) - ids.begin();
   }
-  for_each_overlapping_pair(V, F, threads, groups, visit);
+  for_each_overlapping_pair(V, F, threads, groups, visit, keys);
   // Within each star: overlapping arc boxes. Stars in hub order (deterministic).
   std::vector<std::pair<int, int>> members;  // (hub, triangle)
   for (std::size_t t = 0; t < F.size(); ++t)
@@ -141,7 +144,7 @@ void for_each_candidate_pair(std::span<const std::array<double, 3>> V, std::span
         const int k = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
         arcs.emplace_back(arc_box(V[v], V[t[(k + 1) % 3]], V[t[(k + 2) % 3]]), members[e].second);
       }
-      detail::box_pairs::visit_overlapping_pairs(arcs, arena.max_concurrency(), visit);
+      detail::box_pairs::visit_overlapping_pairs(arcs, arena.max_concurrency(), visit, keys);
       s = e;
     }
   });

@@ -1,6 +1,6 @@
 // tritri/detail/box_grid.h
 //
-// visit_pairs_in_grid(boxes, visit): every pair of overlapping closed boxes, found with a
+// visit_pairs_in_grid(boxes, visit, keys = {}): every pair of overlapping closed boxes, found with a
 // hierarchy of uniform grids instead of a segment tree, for inputs where that is cheap:
 // meshes whose triangles are mostly of one size, with or without some long ones (scans,
 // CAD). Returns false, having visited nothing, when cells would be crowded (many boxes
@@ -9,6 +9,9 @@
 //   boxes  3D boxes with min_coord / max_coord / info() (the triangle index), finite
 //   visit  visit(i, j), i < j triangle indices; called once per overlapping pair, from
 //          several threads at once (oneTBB, the caller's arena)
+//   keys   empty, or three ints per triangle index: pairs whose keys share a value are not
+//          visited (a filter applied in the cells, where the keys are gathered with the
+//          boxes: cheaper than a visit per pair when such pairs are most of them)
 //
 // Method: level 0 is a grid of cell size h, twice the median box extent (grown until it has
 // at most ~8 cells per box); level l has cells of size h 2^l over the same origin. Each box
@@ -32,7 +35,7 @@
 // boxes meet at level j.
 // Cost: O(n L + S + T) for n boxes on L levels, S <= 8 n cell entries and T pair tests
 // (at most 40 n log2 n, else the grid declines). Memory: 4 bytes per entry and per cell,
-// 56 per entry above level 0, 25 per box; level 0 has at most 8 n + 64 cells, each further
+// 64 per entry above level 0, 25 per box; level 0 has at most 8 n + 64 cells, each further
 // level about 8 times fewer.
 #pragma once
 
@@ -47,6 +50,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
+#include <numeric>
+#include <span>
 #include <vector>
 
 namespace tritri::detail::box_pairs {
@@ -63,8 +69,16 @@ struct GridLevel {
   }
 };
 
+// Whether keys a and b share a value (without branches: most pairs of a clean mesh share one).
+inline bool share_key(const std::array<int, 3>& a, const std::array<int, 3>& b) {
+  bool shared = false;
+  for (int u : a) shared |= (u == b[0]) | (u == b[1]) | (u == b[2]);
+  return shared;
+}
+
 template <class Box, class Visit>
-bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
+bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit,
+                         std::span<const std::array<int, 3>> keys = {}) {
   const std::size_t n = boxes.size();
   if (n < 2) return true;
   if (n > (std::size_t{1} << 27)) return false;  // entries (at most 8 n) must fit 32 bits
@@ -176,41 +190,56 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
   // comparisons on contiguous data; measured on the EMBER pairs, 40 n log2 n of them still
   // take less time than CGAL's segment tree on the same boxes.
   const double budget = 40 * static_cast<double>(n) * std::log2(static_cast<double>(n));
-  // The tests across levels: at most, per level l, the boxes below it times 8 cells times
-  // l's fullest cell (a box meets at most 8 cells on every level above its own: the levels'
+  // The tests across levels, per level l: at most the boxes below it times 8 cells times l's
+  // fullest cell (a box meets at most 8 cells on every level above its own: the levels'
   // cells nest, h_l being h 2^l exactly, so a run of a cells along an axis becomes at most
-  // a / 2 + 1 one level up); counted exactly only when that bound does not fit the budget.
+  // a / 2 + 1 one level up). Where the bounds do not fit the budget, the levels are counted
+  // exactly, largest bound first, until they fit (a count visits every box below the level).
   // The levels nest when no axis was capped and each level's 1 / h is exactly half the one
   // below (a normal double: no overflow or underflow at extreme scales); else no bound.
   bool nested = !capped;
   for (std::size_t l = 1; l < levels.size(); ++l)
     nested &= std::isnormal(levels[l].inv_h) && levels[l].inv_h * 2 == levels[l - 1].inv_h;
-  double bound = 0;
-  if (nested) {
-    std::vector<double> below(levels.size() + 1, 0);  // below[l]: boxes on levels < l
-    for (std::size_t i = 0; i < n; ++i) ++below[level_of[i] + 1u];
-    for (std::size_t l = 1; l <= levels.size(); ++l) below[l] += below[l - 1];
-    for (std::size_t l = 1; l <= top; ++l) {
-      std::uint32_t fullest = 0;
-      for (std::size_t c = 0; c < levels[l].cells(); ++c)
-        fullest = std::max(fullest, levels[l].first[c + 1] - levels[l].first[c]);
-      bound += below[l] * 8 * fullest;
+  constexpr double kUnknown = std::numeric_limits<double>::infinity();
+  std::vector<double> cross(top + 1, 0);  // per level: a bound or the exact count
+  std::vector<double> below(levels.size() + 1, 0);  // below[l]: boxes on levels < l
+  for (std::size_t i = 0; i < n; ++i) ++below[level_of[i] + 1u];
+  for (std::size_t l = 1; l <= levels.size(); ++l) below[l] += below[l - 1];
+  for (std::size_t l = 1; l <= top; ++l) {
+    if (!occupied[l]) continue;
+    if (!nested) {
+      cross[l] = kUnknown;
+      continue;
     }
+    std::uint32_t fullest = 0;
+    for (std::size_t c = 0; c < levels[l].cells(); ++c)
+      fullest = std::max(fullest, levels[l].first[c + 1] - levels[l].first[c]);
+    cross[l] = below[l] * 8 * fullest;
   }
-  if (nested && tests + bound <= budget)
-    tests += bound;
-  else if (tests <= budget && top > 0)
-    tests += tbb::parallel_reduce(
+  auto total = [&] { return std::accumulate(cross.begin(), cross.end(), tests); };
+  auto count_exactly = [&](std::size_t l) {
+    return tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, n, 4096), 0.0,
         [&](const tbb::blocked_range<std::size_t>& r, double sum) {
           for (std::size_t i = r.begin(); i < r.end(); ++i)
-            for (std::size_t l = level_of[i] + 1u; l <= top; ++l)
-              if (occupied[l])
-                for_cells(levels[l], range(levels[l], boxes[i]),
-                          [&](std::size_t c) { sum += levels[l].first[c + 1] - levels[l].first[c]; });
+            if (level_of[i] < l)
+              for_cells(levels[l], range(levels[l], boxes[i]),
+                        [&](std::size_t c) { sum += levels[l].first[c + 1] - levels[l].first[c]; });
           return sum;
         },
         std::plus<double>());
+  };
+  std::vector<char> counted(top + 1, 0);
+  if (tests <= budget)
+    while (total() > budget) {
+      std::size_t pick = 0;  // the uncounted level of largest bound
+      for (std::size_t l = 1; l <= top; ++l)
+        if (!counted[l] && cross[l] > 0 && (pick == 0 || cross[l] > cross[pick])) pick = l;
+      if (pick == 0) break;  // all exact, over budget
+      cross[pick] = count_exactly(pick);
+      counted[pick] = 1;
+    }
+  tests = total();
   if (tests > budget) return false;
   // Each cell's boxes by index; on the coarser levels also as contiguous copies of their
   // coordinates, which the finer boxes beneath them read in order (level 0, most of the
@@ -218,7 +247,9 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
   struct Entry {
     double lo[3], hi[3];
     int info;
+    std::array<int, 3> key;
   };
+  const bool keyed = !keys.empty();
   auto entry_of = [&](std::size_t i) {
     Entry e;
     for (int k = 0; k < 3; ++k) {
@@ -226,6 +257,7 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
       e.hi[k] = boxes[i].max_coord(k);
     }
     e.info = boxes[i].info();
+    e.key = keyed ? keys[static_cast<std::size_t>(e.info)] : std::array<int, 3>{};
     return e;
   };
   std::vector<std::vector<std::uint32_t>> member(levels.size());
@@ -264,6 +296,7 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
   struct CellBoxes {
     std::vector<double> lo[3], hi[3];
     std::vector<int> info;
+    std::vector<std::array<int, 3>> key;
     std::vector<std::uint32_t> hit;
   };
   for (std::size_t l = 0; l < levels.size(); ++l) {
@@ -281,6 +314,7 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
             cb.hi[d].resize(k);
           }
           cb.info.resize(k);
+          if (keyed) cb.key.resize(k);
           cb.hit.resize(k);
         }
         for (std::size_t t = 0; t < k; ++t) {
@@ -290,6 +324,7 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
             cb.hi[d][t] = b.max_coord(d);
           }
           cb.info[t] = b.info();
+          if (keyed) cb.key[t] = keys[static_cast<std::size_t>(b.info())];
         }
         const double *lo0 = cb.lo[0].data(), *lo1 = cb.lo[1].data(), *lo2 = cb.lo[2].data();
         const double *hi0 = cb.hi[0].data(), *hi1 = cb.hi[1].data(), *hi2 = cb.hi[2].data();
@@ -305,6 +340,7 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
           }
           for (std::size_t h = 0; h < hits; ++h) {
             const std::size_t q = hit[h];
+            if (keyed && share_key(cb.key[p], cb.key[q])) continue;
             report(g, c, std::max(a0, lo0[q]), std::max(a1, lo1[q]), std::max(a2, lo2[q]), cb.info[p], cb.info[q]);
           }
         }
@@ -323,7 +359,7 @@ bool visit_pairs_in_grid(const std::vector<Box>& boxes, const Visit& visit) {
           const std::vector<Entry>& e = entries[l];
           for_cells(g, range(g, boxes[i]), [&](std::size_t c) {
             for (std::uint32_t p = g.first[c]; p < g.first[c + 1]; ++p)
-              if (overlap(a, e[p]))
+              if (overlap(a, e[p]) && !(keyed && share_key(a.key, e[p].key)))
                 report(g, c, std::max(a.lo[0], e[p].lo[0]), std::max(a.lo[1], e[p].lo[1]),
                        std::max(a.lo[2], e[p].lo[2]), a.info, e[p].info);
           });
