@@ -65,10 +65,19 @@ inline int fan_order(const std::array<int, 2>* link, int d, Scratch& s) {
     s.has_prev[static_cast<std::size_t>(j)] = 1;
     return true;
   };
-  if (d <= 16) {  // the usual star: a quadratic search beats a sort
-    for (int i = 0; i < d; ++i)
-      for (int j = 0; j < d; ++j)
-        if (link[j][0] == link[i][1] && (s.next[static_cast<std::size_t>(i)] >= 0 || !link_to(i, j))) return -1;
+  if (d <= 16) {  // the usual star: a quadratic search beats a sort (counted without branches)
+    int start[16];
+    for (int j = 0; j < d; ++j) start[j] = link[j][0];
+    for (int i = 0; i < d; ++i) {
+      const int end = link[i][1];
+      int count = 0, found = -1;
+      for (int j = 0; j < d; ++j) {
+        const bool match = start[j] == end;
+        count += match;
+        found = match ? j : found;
+      }
+      if (count > 1 || (count == 1 && !link_to(i, found))) return -1;  // two start where i ends
+    }
   } else {
     s.by_start.resize(static_cast<std::size_t>(d));
     for (int i = 0; i < d; ++i) s.by_start[static_cast<std::size_t>(i)] = i;
@@ -131,36 +140,45 @@ inline bool star_embedded(std::span<const std::array<double, 3>> V, int v, const
   if (fan < 0) return false;
   const bool closed = fan == 0;
   const std::array<double, 3>& p = V[static_cast<std::size_t>(v)];
-  // The summed normal only chooses the projection (every decision below is exact), so it is
-  // computed on the edge vectors scaled by a power of two to about 1: no overflow or
-  // underflow at any magnitude.
-  double reach = 0;
-  for (int i = 0; i < d; ++i)
-    for (int c = 0; c < 2; ++c)
-      for (int k = 0; k < 3; ++k)
-        reach = std::max(reach, std::fabs(V[static_cast<std::size_t>(link[i][c])][k] - p[k]));
-  if (!(reach > 0) || !std::isfinite(reach)) return false;
-  int exponent = 0;
-  std::frexp(reach, &exponent);
-  // x 2^-exponent: one product by that power of two when it is a normal double (the same
-  // value as std::ldexp, which is a library call per coordinate), else std::ldexp.
-  const bool by_product = exponent > -1000 && exponent < 1000;
-  const double scale = by_product ? std::ldexp(1.0, -exponent) : 0;
-  auto scaled = [&](double x) { return by_product ? x * scale : std::ldexp(x, -exponent); };
-  double n[3] = {0, 0, 0};
-  for (int i = 0; i < d; ++i) {
-    const auto& a = V[static_cast<std::size_t>(link[i][0])];
-    const auto& b = V[static_cast<std::size_t>(link[i][1])];
-    double e[3], f[3];
-    for (int k = 0; k < 3; ++k) {
-      e[k] = scaled(a[k] - p[k]);
-      f[k] = scaled(b[k] - p[k]);
+  // The summed normal only chooses the projection (every decision below is exact). It is
+  // computed on the edge vectors as they are, and again scaled by a power of two to about 1
+  // where that sum left the range of comfortably normal doubles (overflow, underflow).
+  auto reach = [&] {
+    double r = 0;
+    for (int i = 0; i < d; ++i)
+      for (int c = 0; c < 2; ++c)
+        for (int k = 0; k < 3; ++k) r = std::max(r, std::fabs(V[static_cast<std::size_t>(link[i][c])][k] - p[k]));
+    return r;
+  };
+  auto summed_normal = [&](double (&n)[3], auto&& scaled) {
+    n[0] = n[1] = n[2] = 0;
+    for (int i = 0; i < d; ++i) {
+      const auto& a = V[static_cast<std::size_t>(link[i][0])];
+      const auto& b = V[static_cast<std::size_t>(link[i][1])];
+      double e[3], f[3];
+      for (int k = 0; k < 3; ++k) {
+        e[k] = scaled(a[k] - p[k]);
+        f[k] = scaled(b[k] - p[k]);
+      }
+      n[0] += e[1] * f[2] - e[2] * f[1];
+      n[1] += e[2] * f[0] - e[0] * f[2];
+      n[2] += e[0] * f[1] - e[1] * f[0];
     }
-    n[0] += e[1] * f[2] - e[2] * f[1];
-    n[1] += e[2] * f[0] - e[0] * f[2];
-    n[2] += e[0] * f[1] - e[1] * f[0];
+    return std::max({std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2])});
+  };
+  double n[3];
+  double m = summed_normal(n, [](double x) { return x; });
+  if (!(m >= 0x1p-900 && m <= 0x1p900)) {
+    const double r = reach();
+    if (!(r > 0) || !std::isfinite(r)) return false;
+    int exponent = 0;
+    std::frexp(r, &exponent);
+    // x 2^-exponent: one product by that power of two when it is a normal double (the same
+    // value as std::ldexp, which is a library call per coordinate), else std::ldexp.
+    const bool by_product = exponent > -1000 && exponent < 1000;
+    const double scale = by_product ? std::ldexp(1.0, -exponent) : 0;
+    m = summed_normal(n, [&](double x) { return by_product ? x * scale : std::ldexp(x, -exponent); });
   }
-  const double m = std::max({std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2])});
   if (!(m > 0) || !std::isfinite(m)) return false;
   const int axis = std::fabs(n[0]) == m ? 0 : (std::fabs(n[1]) == m ? 1 : 2);
   const int x = (axis + 1) % 3, y = (axis + 2) % 3;
@@ -174,7 +192,7 @@ inline bool star_embedded(std::span<const std::array<double, 3>> V, int v, const
   // q = p + n scaled to the larger of |p| and the star's reach, so that rounding q moves
   // q - p by a relative 2^-52 at most and the direction stays that of n.
   std::array<double, 3> q;
-  const double size = std::max({std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]), reach});
+  const double size = std::max({std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]), reach()});
   for (int k = 0; k < 3; ++k) q[k] = p[k] + (n[k] / m) * size;
   if (!std::isfinite(q[0] + q[1] + q[2]) || q == p) return false;
   auto orient_normal = [&](int b, int c) {
