@@ -41,7 +41,7 @@
 //
 // Atomic: every file is written to a new temporary file in the same folder (a short name
 // of its own, ".tritri-XXXXXX", so any file name the system takes can be written) and
-// renamed into place once complete (and flushed to disk), the side file just before the
+// renamed into place once complete (not synced to disk: atomic_file.h), the side file just before the
 // mesh file. A file replaced keeps its permission bits; a new one has 0666 minus the umask.
 // On any failure the temporary files are removed and nothing is left at the final paths by
 // this call (an old file there is replaced only on success; if the mesh file's final rename

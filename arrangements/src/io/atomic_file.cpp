@@ -69,7 +69,6 @@ void AtomicFile::finish() {
   struct stat old {};
   if (::stat(final_.c_str(), &old) == 0 && S_ISREG(old.st_mode) && ::fchmod(fd_, old.st_mode & 0777) != 0)
     fail("cannot give the temporary file the mode of the file it replaces");
-  if (::fsync(fd_) != 0 && errno != EINVAL) fail("cannot flush to disk");  // EINVAL: no fsync (pipes, ...)
   const int fd = fd_;
   fd_ = -1;
   if (::close(fd) != 0) fail("cannot close");
