@@ -16,6 +16,7 @@
 #include "models/double_model.h"
 #include "models/exact_model.h"
 #include "stages/4_share_coplanar.h"
+#include "support/append_points.h"
 #include "support/sort_unique.h"
 
 namespace arrangements {
@@ -218,18 +219,7 @@ BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::ve
   // sorted in the same exact order, each new point looked up (grids put many vertices at
   // exactly the x of a new point, where xyz order would need exact arithmetic).
   std::vector<int> final_id(keys.size(), -1);
-  // Points are copied in parallel for the double model, whose implicit points share
-  // immutable data through atomic reference counts and make most of this step's time; the
-  // exact model's CGAL points (also counted atomically, CGAL >= 5.5) are copied by one
-  // thread, as before, a path whose speed this does not measure.
-  constexpr bool kParallelCopy = std::is_same_v<Point, tritri::ImplicitPoint>;
-  if constexpr (kParallelCopy) {
-    g.points.resize(V.size());
-    tbb::parallel_for(std::size_t{0}, V.size(), [&](std::size_t v) { g.points[v] = M::explicit_point(V[v]); });
-  } else {
-    g.points.reserve(V.size());
-    for (const auto& v : V) g.points.push_back(M::explicit_point(v));
-  }
+  append_points(g.points, V.size(), [&](std::size_t v) { return M::explicit_point(V[v]); });
   std::vector<int> by_position;
   std::vector<Key> vb;
   if (!keys.empty()) {
@@ -274,14 +264,7 @@ BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::ve
     }
   }
   g.new_points = fresh.size();
-  if constexpr (kParallelCopy) {
-    g.points.resize(V.size() + fresh.size());
-    tbb::parallel_for(std::size_t{0}, fresh.size(),
-                      [&](std::size_t k) { g.points[V.size() + k] = std::move(lpis[fresh[k]]); });
-  } else {
-    g.points.reserve(V.size() + fresh.size());
-    for (const int k : fresh) g.points.push_back(std::move(lpis[k]));
-  }
+  append_points(g.points, fresh.size(), [&](std::size_t k) { return std::move(lpis[fresh[k]]); });
   for (std::size_t i = 0; i < keys.size(); ++i) final_id[i] = final_id[representative[i]];
   // The new points in the order of the sort (triangulation looks TPIs up in it, with
   // M::compare).

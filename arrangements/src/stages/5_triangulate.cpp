@@ -14,6 +14,7 @@
 #include "models/exact_model.h"
 #include "stages/5_triangulate_cluster.h"
 #include "stages/5_triangulate_triangle.h"
+#include "support/append_points.h"
 #include "support/label_set_table.h"
 
 namespace arrangements {
@@ -185,15 +186,7 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
   auto point = [&](int v) -> const Point& {
     return v < static_cast<int>(g.points.size()) ? g.points[v] : new_tpis[v - g.points.size()];
   };
-  // Copies in parallel for the double model's implicit points, by one thread for the exact
-  // model's CGAL points (as in stage 4).
-  if constexpr (std::is_same_v<Point, tritri::ImplicitPoint>) {
-    out.vertices.resize(point_of.size());
-    tbb::parallel_for(std::size_t{0}, point_of.size(), [&](std::size_t i) { out.vertices[i] = point(point_of[i]); });
-  } else {
-    out.vertices.reserve(point_of.size());
-    for (const int v : point_of) out.vertices.push_back(point(v));
-  }
+  append_points(out.vertices, point_of.size(), [&](std::size_t i) { return point(point_of[i]); });
   if (scale_exponent != 0)
     tbb::parallel_for(std::size_t{0}, out.vertices.size(),
                       [&](std::size_t i) { out.vertices[i] = M::unscaled(out.vertices[i], scale_exponent); });
