@@ -14,12 +14,13 @@
 //   f.commit()            renames the temporary file to path (after finish())
 //   ~AtomicFile()         removes the temporary file unless commit() succeeded
 //
-// Guarantees: path holds either what it held before or every byte appended, never a part
-// of them; an old file at path is replaced only by a successful commit(); after a failure
-// (an exception from any call, or no commit()) the temporary file is removed once the
-// AtomicFile is destroyed. Atomic, not synced: no fsync (as cp and the peers' tools: it
-// cost 1.8 ms per file, a third of a small Boolean's run); surviving a system crash is the
-// file system's part (ext4 and XFS write a file's data before a rename over an old file).
+// Guarantees (towards other readers, and if this process fails): path holds either what it
+// held before or every byte appended, never a part of them; an old file at path is replaced
+// only by a successful commit(); after a failure (an exception from any call, or no
+// commit()) the temporary file is removed once the AtomicFile is destroyed. Not synced to
+// disk (no fsync, as cp and the peers' tools: 1.8 ms per file, a third of a small Boolean's
+// output stage): after a crash of the whole system, some file systems may show the new file
+// empty or partial (ext4 and btrfs write the data before a rename over an old file).
 //
 // Errors: std::runtime_error naming the final path, what failed and the system's reason:
 //   "PATH: cannot create a temporary file beside it (REASON)"

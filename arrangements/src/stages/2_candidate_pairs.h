@@ -84,7 +84,7 @@ template <class M>
 struct BasicDetectedPairs {
   std::vector<std::pair<int, int>> pairs;         // to classify, sorted
   std::vector<std::pair<int, int>> coplanar;      // those of them in one plane, sorted
-  std::size_t box_pairs = 0;                      // pairs with overlapping boxes
+  std::size_t box_pairs = 0;                      // pairs kept by the broad phase (slabs, stars)
   std::vector<typename M::PlaneCache> planes;     // M::plane_cache of each triangle, for stage 3
 };
 using DetectedPairs = BasicDetectedPairs<DoubleModel>;

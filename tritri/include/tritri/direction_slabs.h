@@ -10,7 +10,7 @@
 //   DirectionSlabs s = direction_slabs(lo, hi);    // corners known by boxes lo[k]..hi[k]
 //   slabs_apart(s, t)    // true: apart along one direction, so the triangles do not meet
 //   apart_by_slabs(a, b, s, t)   // the same for triangles a, b (corner indices) sharing no corner
-//   triangle_slabs(Vlo, Vhi, F)   // every triangle's slabs, in parallel
+//   triangle_slab(Vlo, Vhi, f), triangle_slabs(Vlo, Vhi, F)   // one triangle's, every triangle's (parallel)
 //   TriangleSlabsOnDemand slabs(Vlo, Vhi, F); slabs.apart(i, j)   // each computed on first use
 // Exactness: a certified filter. Each extent is computed in double arithmetic and widened
 // by 2^-50 (|x| + |y| + |z|) + 2^-1074 of its point; this exceeds the rounding of the sum
@@ -135,19 +135,21 @@ inline DirectionSlabs direction_slabs(const std::array<std::array<double, 3>, 3>
   return detail::to_float_slabs(detail::direction_extents(lo, hi));
 }
 
-// The slabs of every triangle of F over vertex boxes [Vlo[v], Vhi[v]] (the same span for
-// double points, which then take the points' own, cheaper computation); in parallel (oneTBB,
-// in the calling thread's arena).
+// The slabs of triangle f (corner indices) over vertex boxes [Vlo[v], Vhi[v]] (the same span
+// for double points, which then take the points' own computation).
+inline DirectionSlabs triangle_slab(std::span<const std::array<double, 3>> Vlo,
+                                    std::span<const std::array<double, 3>> Vhi, const std::array<int, 3>& f) {
+  if (Vlo.data() == Vhi.data()) return direction_slabs(Vlo[f[0]], Vlo[f[1]], Vlo[f[2]]);
+  return direction_slabs({Vlo[f[0]], Vlo[f[1]], Vlo[f[2]]}, {Vhi[f[0]], Vhi[f[1]], Vhi[f[2]]});
+}
+
+// The slabs of every triangle of F (triangle_slab); in parallel (oneTBB, in the calling
+// thread's arena).
 inline std::vector<DirectionSlabs> triangle_slabs(std::span<const std::array<double, 3>> Vlo,
                                                   std::span<const std::array<double, 3>> Vhi,
                                                   std::span<const std::array<int, 3>> F) {
   std::vector<DirectionSlabs> slabs(F.size());
-  const bool points = Vlo.data() == Vhi.data();
-  tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) {
-    const auto& f = F[t];
-    slabs[t] = points ? direction_slabs(Vlo[f[0]], Vlo[f[1]], Vlo[f[2]])
-                      : direction_slabs({Vlo[f[0]], Vlo[f[1]], Vlo[f[2]]}, {Vhi[f[0]], Vhi[f[1]], Vhi[f[2]]});
-  });
+  tbb::parallel_for(std::size_t{0}, F.size(), [&](std::size_t t) { slabs[t] = triangle_slab(Vlo, Vhi, F[t]); });
   return slabs;
 }
 
@@ -190,7 +192,8 @@ inline bool apart_by_slabs(const std::array<int, 3>& a, const std::array<int, 3>
 // and the embedded stars of a clean mesh, a few per hundred), so the others cost nothing,
 // not even the pages of their slots. get() may be called from several threads at once: the
 // first caller of a triangle claims its slot (an atomic state), the others compute their own
-// copy meanwhile.
+// copy meanwhile. The spans must outlive the object. Cost: one byte per triangle written at
+// construction (the states), 96 reserved; a use costs an acquire load once computed.
 class TriangleSlabsOnDemand {
  public:
   TriangleSlabsOnDemand(std::span<const std::array<double, 3>> Vlo, std::span<const std::array<double, 3>> Vhi,
@@ -225,10 +228,7 @@ class TriangleSlabsOnDemand {
   const DirectionSlabs& compute(std::size_t t, DirectionSlabs& scratch) const {
     std::uint8_t state = state_[t].load(std::memory_order_acquire);
     if (state == kReady) return slabs_[t];
-    const auto& f = F_[t];
-    scratch = Vlo_.data() == Vhi_.data()
-                  ? direction_slabs(Vlo_[f[0]], Vlo_[f[1]], Vlo_[f[2]])
-                  : direction_slabs({Vlo_[f[0]], Vlo_[f[1]], Vlo_[f[2]]}, {Vhi_[f[0]], Vhi_[f[1]], Vhi_[f[2]]});
+    scratch = triangle_slab(Vlo_, Vhi_, F_[t]);
     if (state == kEmpty && state_[t].compare_exchange_strong(state, kWriting, std::memory_order_relaxed)) {
       slabs_[t] = scratch;
       state_[t].store(kReady, std::memory_order_release);

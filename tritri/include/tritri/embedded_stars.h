@@ -168,7 +168,7 @@ inline bool star_embedded(std::span<const std::array<double, 3>> V, int v, const
   };
   double n[3];
   double m = summed_normal(n, [](double x) { return x; });
-  if (!(m >= 0x1p-900 && m <= 0x1p900)) {
+  if (!(m >= 0x1p-900 && m <= 0x1p900) || std::isnan(n[0] + n[1] + n[2])) {  // (max ignores a later NaN)
     const double r = reach();
     if (!(r > 0) || !std::isfinite(r)) return false;
     int exponent = 0;
@@ -239,16 +239,16 @@ inline std::vector<std::uint8_t> embedded_stars(std::span<const std::array<doubl
 
 // Keys for tritri::for_each_overlapping_pair / for_each_candidate_pair that skip exactly
 // the pairs share_embedded_star settles: each triangle's corners, a corner whose star is not
-// embedded replaced by a value no other key holds (-1 - (3 t + k) for corner k of triangle t;
-// at most 2^31 / 3 triangles). Two triangles' keys share a value iff they share a vertex with
-// an embedded star.
+// embedded replaced by -1 - t, a value no other triangle's key holds (keys are only compared
+// between different triangles; any int index t). Two triangles' keys share a value iff they
+// share a vertex with an embedded star.
 inline std::vector<std::array<int, 3>> embedded_corner_keys(std::span<const std::array<int, 3>> F,
                                                             std::span<const std::uint8_t> embedded) {
   std::vector<std::array<int, 3>> keys(F.size());
   for (std::size_t t = 0; t < F.size(); ++t)
     for (int k = 0; k < 3; ++k) {
       const int v = F[t][k];
-      keys[t][k] = embedded[static_cast<std::size_t>(v)] ? v : -1 - static_cast<int>(3 * t + k);
+      keys[t][k] = embedded[static_cast<std::size_t>(v)] ? v : -1 - static_cast<int>(t);
     }
   return keys;
 }

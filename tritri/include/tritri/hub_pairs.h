@@ -7,9 +7,11 @@
 // that, on a fan, meet only in the hub or a shared edge.
 //   V, F, threads, group, keys  as for_each_overlapping_pair (tritri/box_pairs.h)
 //   visit                 visit(i, j), i < j, const, callable from several threads at once
-// visit is called once for every pair (outside one group) of for_each_overlapping_pair,
-// except pairs of triangles around one hub whose directions from the hub are disjoint:
-// those meet only in the hub. The set does not depend on `threads`.
+// visit is called once for every pair (outside one group) of for_each_overlapping_pair
+// without keys, except pairs of triangles around one hub whose directions from the hub are
+// disjoint: those meet only in the hub; with keys, pairs whose keys share a value may also
+// be skipped (within a star always, where its arcs are searched by the grid). The set does
+// not depend on `threads`.
 // Method: a hub is a vertex of at least kHubDegree triangles; each triangle incident to a
 // hub (and in no group of the caller) joins the star of its hub of highest degree (ties:
 // the smaller vertex id). Stars are used only when their own pairs (s^2 / 2 for a star of
