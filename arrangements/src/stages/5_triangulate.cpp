@@ -7,7 +7,6 @@
 #include <atomic>
 #include <cmath>
 #include <numeric>
-#include <type_traits>
 
 #include "arrangements/memory_budget.h"
 #include "models/double_model.h"

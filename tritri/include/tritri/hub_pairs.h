@@ -128,7 +128,8 @@ void for_each_candidate_pair(std::span<const std::array<double, 3>> V, std::span
     else if (!group.empty() && group[t] >= 0)
       groups[t] = std::lower_bound(ids.begin(), ids.end(), group[t]) - ids.begin();
   }
-  for_each_overlapping_pair(V, F, threads, groups, visit, keys);
+  // (No keys here: the search with groups does not use them, see box_pairs.h.)
+  for_each_overlapping_pair(V, F, threads, groups, visit);
   // Within each star: overlapping arc boxes. Stars in hub order (deterministic).
   std::vector<std::pair<int, int>> members;  // (hub, triangle)
   for (std::size_t t = 0; t < F.size(); ++t)
