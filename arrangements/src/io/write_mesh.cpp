@@ -2,6 +2,8 @@
 #include "arrangements/write_mesh.h"
 
 #include <gmp.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <unistd.h>
 
 #include <array>
@@ -96,15 +98,16 @@ void append_rational(AtomicFile& f, const CGAL::Gmpq& q, std::string& scratch) {
 // The vertex coordinates as doubles (correctly rounded), refusing those that overflow.
 template <class Mesh>
 std::vector<Vec3> rounded_vertices(const std::string& path, const Mesh& mesh) {
-  std::vector<Vec3> out;
-  out.reserve(mesh.vertices.size());
-  for (const auto& p : mesh.vertices) {
-    out.push_back(nearest_double(p));
-    for (double c : out.back())
+  // In parallel: implicit points that the filter cannot round take exact arithmetic.
+  std::vector<Vec3> out(mesh.vertices.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), 256), [&](const auto& range) {
+    for (std::size_t v = range.begin(); v != range.end(); ++v) out[v] = nearest_double(mesh.vertices[v]);
+  });
+  for (std::size_t v = 0; v < out.size(); ++v)
+    for (double c : out[v])
       if (!std::isfinite(c))
-        throw std::runtime_error(path + ": vertex " + std::to_string(out.size() - 1) +
+        throw std::runtime_error(path + ": vertex " + std::to_string(v) +
                                  " has a coordinate beyond the double range (write it with exact coordinates)");
-  }
   return out;
 }
 

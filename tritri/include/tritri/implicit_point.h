@@ -309,10 +309,67 @@ inline bool quotient_to_normal_double(mpz_srcptr a, mpz_srcptr b, double& out) {
   return normal;
 }
 
+// The nearest double to o + x / w, from the long double filter's values of x and w (their
+// errors bounded by perm and rounding depth, filtered_value.h) and an explicit double o,
+// when the filter certifies it; false otherwise (the caller rounds exactly). Why it is
+// exact: the exact value lies within E of q = fl(o + fl(vx / vw)), E bounding the filter's
+// errors, the division's and the sum's roundings, inflated for the roundings of E itself;
+// d = q rounded to double is the nearest double to every value within E of q when E is
+// below q's distance to both rounding boundaries d - gap_below / 2 and d + gap_above / 2
+// (both exact in long double: q - d is, and it is a small multiple of q's last bit).
+// Strict comparisons leave ties to the exact path. Only normal doubles with a margin
+// (2^-1020 .. 2^1020) are certified. With o near the point (its filtered approximation)
+// x / w is a tiny correction, and E is about u |q| (u = 2^-64): nearly always decisive.
+inline bool certified_nearest_double(double o, const WideFilteredValue& x, int x_depth, const WideFilteredValue& w,
+                                     int w_depth, double& out) {
+  using L = long double;
+  constexpr L u = std::numeric_limits<L>::epsilon() / 2;
+  const L ex = x.perm * (x_depth * (u * (L(1) + L(0x1p-20))));
+  const L ew = w.perm * (w_depth * (u * (L(1) + L(0x1p-20))));
+  const L aw = w.v < 0 ? -w.v : w.v;
+  if (!(aw > 2 * ew) || !std::isfinite(ex) || !std::isfinite(aw)) return false;
+  const L r = x.v / w.v;
+  const L ar = r < 0 ? -r : r;
+  const L q = static_cast<L>(o) + r;
+  const L aq = q < 0 ? -q : q;
+  if (!(aq >= L(0x1p-1020) && aq <= L(0x1p1020))) return false;
+  // |x/w - vx/vw| <= (ex + |vx/vw| ew) / (|vw| - ew); plus the division's and the sum's
+  // roundings (u each, relative to their results).
+  const L e = ((ex + ar * (1 + 2 * u) * ew) / (aw - ew) + 2 * u * ar + 2 * u * aq) * (L(1) + L(0x1p-50));
+  const double d = static_cast<double>(q);
+  const L delta = q - static_cast<L>(d);
+  const L gap_below = static_cast<L>(d) - static_cast<L>(std::nextafter(d, -HUGE_VAL));
+  const L gap_above = static_cast<L>(std::nextafter(d, HUGE_VAL)) - static_cast<L>(d);
+  if (!(e < gap_above / 2 - delta && e < gap_below / 2 + delta)) return false;
+  out = d;
+  return true;
+}
+
 }  // namespace detail
+
+// to_double's fast path alone: the nearest doubles to p's coordinates when the long double
+// filter certifies all three, else nullopt (also for explicit points, and where long
+// double is not x87-like: detail::kWideFilterUseful). Evaluated as o + W (p - o) / W with
+// o = p.approx(), so that only the small correction carries the filter's error.
+inline std::optional<std::array<double, 3>> certified_to_double(const ImplicitPoint& p) {
+  if constexpr (!detail::kWideFilterUseful || std::numeric_limits<long double>::digits < 64) return std::nullopt;
+  if (p.is_explicit()) return std::nullopt;
+  const std::array<double, 3>& o = p.approx();
+  if (!std::isfinite(o[0]) || !std::isfinite(o[1]) || !std::isfinite(o[2])) return std::nullopt;
+  const auto h = p.offset_homogeneous<detail::WideFilteredValue>(o);
+  const auto depth = p.offset_homogeneous<detail::RoundingDepth>(o);
+  std::array<double, 3> out;
+  if (detail::certified_nearest_double(o[0], h.x, depth.x.depth, h.w, depth.w.depth, out[0]) &&
+      detail::certified_nearest_double(o[1], h.y, depth.y.depth, h.w, depth.w.depth, out[1]) &&
+      detail::certified_nearest_double(o[2], h.z, depth.z.depth, h.w, depth.w.depth, out[2]))
+    return out;
+  return std::nullopt;
+}
 
 inline std::array<double, 3> to_double(const ImplicitPoint& p) {
   if (p.is_explicit()) return p.approx();
+  // Most points: the long double filter certifies the rounding, no exact arithmetic.
+  if (const auto fast = certified_to_double(p)) return *fast;
   const auto& h = p.exact_homogeneous();
   // x / w = (xn wd) / (xd wn), the Mpzf values exported as fractions with power-of-two
   // denominators.

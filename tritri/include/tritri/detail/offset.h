@@ -11,7 +11,8 @@
 //
 // Differences of two input doubles are leaves of the filtered expression
 // (difference_leaf): one rounding, relative to the difference itself (the forward error
-// analysis of Shewchuk's orient3d bound), so their bound term is |a - b|, not |a| + |b|.
+// analysis of Shewchuk's orient3d bound), so their bound term is |a - b|, not |a| + |b|;
+// the same in the long double filter (WideFilteredValue), one rounding of u = 2^-64.
 #pragma once
 
 #include <array>
@@ -29,6 +30,11 @@ T difference_leaf(double a, double b) {
 template <>
 inline FilteredValue difference_leaf<FilteredValue>(double a, double b) {
   const double d = a - b;
+  return {d, d < 0 ? -d : d};
+}
+template <>
+inline WideFilteredValue difference_leaf<WideFilteredValue>(double a, double b) {
+  const long double d = static_cast<long double>(a) - static_cast<long double>(b);
   return {d, d < 0 ? -d : d};
 }
 template <>
