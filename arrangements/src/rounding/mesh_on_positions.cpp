@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <tritri/double_kernel.h>
 #include <tritri/projection.h>
@@ -30,8 +31,9 @@ MeshOnPositions mesh_on_positions(const std::vector<Vec3>& position, const std::
   const std::size_t nv = position.size();
   std::vector<int> order(nv), same(nv);
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](int a, int b) { return position[a] < position[b] || (position[a] == position[b] && a < b); });
+  // Both sorts order by index among equals: a total order, the same for any thread count.
+  tbb::parallel_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return position[a] < position[b] || (position[a] == position[b] && a < b); });
   for (std::size_t k = 0; k < nv; ++k)
     same[order[k]] = k > 0 && position[order[k]] == position[order[k - 1]] ? same[order[k - 1]] : order[k];
 
@@ -53,7 +55,8 @@ MeshOnPositions mesh_on_positions(const std::vector<Vec3>& position, const std::
   by_key.reserve(nt);
   for (std::size_t t = 0; t < nt; ++t)
     if (alive[t]) by_key.push_back(static_cast<int>(t));
-  std::sort(by_key.begin(), by_key.end(), [&](int a, int b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
+  tbb::parallel_sort(by_key.begin(), by_key.end(),
+                     [&](int a, int b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
   std::vector<int> first(nt, -1);  // the first triangle on the same three vertices
   for (std::size_t k = 0; k < by_key.size(); ++k)
     first[by_key[k]] = k > 0 && key[by_key[k]] == key[by_key[k - 1]] ? first[by_key[k - 1]] : by_key[k];

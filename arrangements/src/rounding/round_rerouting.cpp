@@ -157,10 +157,18 @@ std::size_t reroute_round(RoundedMesh& m, const std::vector<std::pair<int, int>>
       alive[t] = 0;
       for (int k = 0; k < 3; ++k) add(f[k], f[(k + 1) % 3], face_split[t], t);
     }
-  std::unordered_map<std::uint64_t, std::vector<int>> on_edge;  // edge -> triangles (some dead)
-  for (std::size_t t = 0; t < m.triangles.size(); ++t)
-    if (alive[t])
-      for (int k = 0; k < 3; ++k) on_edge[edge_key(m.triangles[t][k], m.triangles[t][(k + 1) % 3])].push_back(t);
+  // Edge -> its triangles (some dead), for the edges with vertices pending only: indexing
+  // every edge of the mesh cost more than the rest of a round.
+  std::unordered_map<std::uint64_t, std::vector<int>> on_edge;
+  auto index_pending_edges = [&](const std::unordered_map<std::uint64_t, std::vector<int>>& pending) {
+    on_edge.clear();
+    for (const auto& entry : pending) on_edge[entry.first];
+    for (std::size_t t = 0; t < m.triangles.size(); ++t)
+      if (alive[t])
+        for (int k = 0; k < 3; ++k)
+          if (auto it = on_edge.find(edge_key(m.triangles[t][k], m.triangles[t][(k + 1) % 3])); it != on_edge.end())
+            it->second.push_back(static_cast<int>(t));
+  };
 
   // Every triangle on an edge with vertices pending on it split through them, in order along
   // it (closed: a sliver over the edge, whose apex is one of them, too, leaving one piece
@@ -168,6 +176,7 @@ std::size_t reroute_round(RoundedMesh& m, const std::vector<std::pair<int, int>>
   // split the same way and a closed surface stays closed). Longer edges first, so that a
   // vertex pending on a piece of an edge finds that piece.
   auto split_edges = [&](std::unordered_map<std::uint64_t, std::vector<int>>& pending) {
+    index_pending_edges(pending);
     std::vector<std::pair<double, std::uint64_t>> order;
     for (const auto& [key, vertices] : pending) {
       const Vec3 &a = P[key >> 32], &b = P[key & 0xffffffffu];
@@ -208,7 +217,9 @@ std::size_t reroute_round(RoundedMesh& m, const std::vector<std::pair<int, int>>
           add(chain[c], chain[c + 1], apex, t);
           const int piece = static_cast<int>(m.triangles.size()) - 1;
           const Tri& g = m.triangles[piece];
-          for (int j = 0; j < 3; ++j) on_edge[edge_key(g[j], g[(j + 1) % 3])].push_back(piece);
+          for (int j = 0; j < 3; ++j)
+            if (auto it = on_edge.find(edge_key(g[j], g[(j + 1) % 3])); it != on_edge.end())
+              it->second.push_back(piece);
         }
       }
     }

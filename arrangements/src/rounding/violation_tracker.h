@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -22,17 +23,22 @@ class ViolationTracker {
   // call's mesh (check_arrangement_touching); the previous violations between triangles
   // found again carry over (any mesh may follow any other: where more than a quarter of
   // the triangles changed, every pair is checked again). Exact; cost proportional to what
-  // changed, plus hashing the triangles.
+  // changed, plus hashing the triangles and sorting their hashes.
   std::vector<std::pair<int, int>> violations(const RoundedMesh& mesh);
 
  private:
   using Corners = std::array<Vec3, 3>;  // sorted
-  using Entry = std::pair<Corners, int>;  // a triangle's corners and its index
+  // A triangle's corners hashed (equal corners, equal hash; -0 and 0 alike) and its index;
+  // sorted by hash then index, triangles are matched by a merge, their corners compared
+  // only where the hashes are equal: no search through the corners themselves.
+  struct Keyed {
+    std::uint64_t hash;
+    int index;
+    bool operator<(const Keyed& o) const { return hash < o.hash || (hash == o.hash && index < o.index); }
+  };
   bool first_ = true;
-  // The last mesh's triangles, sorted by corners only when the next call needs to look them
-  // up (a first check that finds nothing pays for no sort); flat vectors, no hashing.
-  std::vector<Entry> previous_;
-  bool previous_sorted_ = false;
+  std::vector<Corners> previous_;     // the last mesh's triangles' corners, by index
+  std::vector<Keyed> previous_keys_;  // and their keys, sorted
   std::vector<std::pair<Corners, Corners>> previous_violating_;
 };
 
