@@ -35,6 +35,7 @@ using tritri::Sign;
 using tritri_test::kPlanes;
 using tritri_test::Point;
 using tritri_test::Q;
+using tritri_test::is_nearest_double;
 using tritri_test::Q3;
 using tritri_test::Recipe;
 using tritri_test::Rng;
@@ -83,19 +84,6 @@ TEST(ImplicitPoint, LineThroughAPointOfThePlaneMeetsItThere) {
   const auto lpi = ImplicitPoint::lpi(m, v, plane[1], plane[2], plane[0]);
   EXPECT_TRUE(tritri::equal(lpi, ImplicitPoint::explicit_point(v)));
   EXPECT_EQ(tritri::to_double(lpi), v);
-}
-
-// |e - d| <= |e - d'| for both neighbours d' of d, ties to even: d is e correctly rounded.
-bool is_nearest_double(double d, const Q& e) {
-  if (!std::isfinite(d)) return false;
-  const Q err = abs(e - Q(d));
-  for (double n : {std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY)}) {
-    if (!std::isfinite(n)) continue;
-    const Q en = abs(e - Q(n));
-    if (en < err) return false;
-    if (en == err && (std::bit_cast<std::uint64_t>(std::fabs(d)) & 1) != 0) return false;  // tie: d must be even
-  }
-  return true;
 }
 
 // The x coordinate is 2^-1075 / (1 - 2^-75): just above half the smallest subnormal, so it

@@ -32,21 +32,9 @@ namespace {
 using tritri::ImplicitPoint;
 using Point = tritri_test::DoublePoint;
 using tritri_test::Q;
+using tritri_test::is_nearest_double;
 using tritri_test::Q3;
 using Triple = tritri_test::DoubleTriple;
-
-// |e - d| <= |e - d'| for both neighbours d' of d, ties to even: d is e correctly rounded.
-bool is_nearest_double(double d, const Q& e) {
-  if (!std::isfinite(d)) return false;
-  const Q err = abs(e - Q(d));
-  for (double n : {std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY)}) {
-    if (!std::isfinite(n)) continue;
-    const Q en = abs(e - Q(n));
-    if (en < err) return false;
-    if (en == err && (std::bit_cast<std::uint64_t>(std::fabs(d)) & 1) != 0) return false;
-  }
-  return true;
-}
 
 // Distance from e to the nearest rounding boundary (midpoint between two doubles), relative
 // to |e|, as a double (e a normal, nonzero value).

@@ -27,7 +27,9 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -79,6 +81,19 @@ inline Q3 cross(const Q3& a, const Q3& b) {
 }
 inline Q dot(const Q3& a, const Q3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 inline bool is_zero(const Q3& a) { return sgn(a[0]) == 0 && sgn(a[1]) == 0 && sgn(a[2]) == 0; }
+
+// |e - d| <= |e - d'| for both neighbours d' of d, ties to even: d is e correctly rounded.
+inline bool is_nearest_double(double d, const Q& e) {
+  if (!std::isfinite(d)) return false;
+  const Q err = abs(e - Q(d));
+  for (double n : {std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY)}) {
+    if (!std::isfinite(n)) continue;
+    const Q en = abs(e - Q(n));
+    if (en < err) return false;
+    if (en == err && (std::bit_cast<std::uint64_t>(std::fabs(d)) & 1) != 0) return false;  // tie: d must be even
+  }
+  return true;
+}
 
 // (b - a) x (c - a): the normal of the plane through a, b, c (zero when collinear).
 inline Q3 normal(const Q3& a, const Q3& b, const Q3& c) { return cross(sub(b, a), sub(c, a)); }
