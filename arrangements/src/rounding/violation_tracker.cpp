@@ -12,23 +12,42 @@
 namespace arrangements {
 namespace {
 
-// A 64-bit mix of the corners' bits (splitmix64's finaliser per coordinate); -0 counts as 0,
-// since the corners are compared with ==.
+// A 64-bit mix of coordinates (splitmix64's finaliser per coordinate); -0 counts as 0,
+// since positions are compared with ==.
+std::uint64_t mix(std::uint64_t h, double x) {
+  std::uint64_t bits;
+  const double y = x == 0 ? 0.0 : x;
+  std::memcpy(&bits, &y, sizeof bits);
+  h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+  h ^= h >> 30;
+  h *= 0xbf58476d1ce4e5b9ull;
+  h ^= h >> 27;
+  h *= 0x94d049bb133111ebull;
+  h ^= h >> 31;
+  return h;
+}
+std::uint64_t hash_position(const Vec3& p) { return mix(mix(mix(0x9e3779b97f4a7c15ull, p[0]), p[1]), p[2]); }
 std::uint64_t hash_corners(const std::array<Vec3, 3>& c) {
   std::uint64_t h = 0x9e3779b97f4a7c15ull;
   for (const Vec3& p : c)
-    for (double x : p) {
-      std::uint64_t bits;
-      const double y = x == 0 ? 0.0 : x;
-      std::memcpy(&bits, &y, sizeof bits);
-      h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-      h ^= h >> 30;
-      h *= 0xbf58476d1ce4e5b9ull;
-      h ^= h >> 27;
-      h *= 0x94d049bb133111ebull;
-      h ^= h >> 31;
-    }
+    for (double x : p) h = mix(h, x);
   return h;
+}
+
+// Whether two of the mesh's corners are distinct vertices at one position: then whether a
+// pair violates depends on vertex identities, not on positions alone.
+bool repeats_a_position(const RoundedMesh& mesh) {
+  std::vector<char> used(mesh.vertices.size(), 0);
+  for (const Tri& f : mesh.triangles)
+    for (int v : f) used[v] = 1;
+  std::vector<std::pair<std::uint64_t, int>> keys;
+  for (std::size_t v = 0; v < used.size(); ++v)
+    if (used[v]) keys.emplace_back(hash_position(mesh.vertices[v]), static_cast<int>(v));
+  tbb::parallel_sort(keys.begin(), keys.end());
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    for (std::size_t j = i + 1; j < keys.size() && keys[j].first == keys[i].first; ++j)
+      if (mesh.vertices[keys[i].second] == mesh.vertices[keys[j].second]) return true;
+  return false;
 }
 
 }  // namespace
@@ -54,6 +73,12 @@ std::vector<std::pair<int, int>> ViolationTracker::violations(const RoundedMesh&
       if (corners[it->index] == c) return it->index;
     return -1;
   };
+  // Two vertices at one position, or one triangle twice: checked in full, and so is the
+  // next mesh (this one's verdicts depended on vertex identities).
+  bool ambiguous = repeats_a_position(mesh);
+  for (std::size_t i = 0; i + 1 < nt && !ambiguous; ++i)
+    for (std::size_t j = i + 1; j < nt && keys[j].hash == keys[i].hash && !ambiguous; ++j)
+      ambiguous = current[keys[i].index] == current[keys[j].index];
   std::vector<std::pair<int, int>> violating;
   std::vector<char> changed;
   std::size_t changed_count = nt;
@@ -81,7 +106,7 @@ std::vector<std::pair<int, int>> ViolationTracker::violations(const RoundedMesh&
   }
   // Where most triangles changed, the full check (stage 2's parallel search) costs less
   // than the changed ones' box search against all.
-  if (changed_count > nt / 4) {
+  if (changed_count > nt / 4 || ambiguous || previous_ambiguous_) {
     violating = check_arrangement(mesh, 0).violating_pairs;
     first_ = false;
   } else {
@@ -99,6 +124,7 @@ std::vector<std::pair<int, int>> ViolationTracker::violations(const RoundedMesh&
   for (const auto& [i, j] : violating) previous_violating_.emplace_back(current[i], current[j]);
   previous_ = std::move(current);
   previous_keys_ = std::move(keys);
+  previous_ambiguous_ = ambiguous;
   return violating;
 }
 

@@ -1,6 +1,6 @@
 // ViolationTracker: the violating pairs of a rounded mesh that changes a little from round
-// to round, checked again only where it changed. Shared by the last resorts of round_safe
-// (round_rerouting.cpp, round_per_vertex.cpp).
+// to round, checked again only where it changed. Shared by the passes and the last resorts
+// of round_safe (round_ladder.h, round_rerouting.cpp, round_per_vertex.cpp, round_nudged.cpp).
 #pragma once
 
 #include <array>
@@ -16,14 +16,17 @@ namespace arrangements {
 class ViolationTracker {
  public:
   // The violating pairs of `mesh` (triangle indices i < j, sorted), as check_arrangement
-  // lists them. Precondition: no degenerate triangle (mesh_on_positions drops them).
-  // Whether a pair violates depends only on the positions of its corners (vertices at one
-  // position are one vertex), so the first call checks every pair and later ones classify
+  // lists them, for any sequence of meshes. Precondition: no degenerate triangle
+  // (mesh_on_positions drops them). Where no two vertices share a position and no triangle
+  // is repeated (mesh_on_positions makes such meshes; nudging's moves may not), whether a
+  // pair violates depends only on the positions of its corners, so the first call checks
+  // every pair and later ones classify
   // only the pairs with a triangle whose corner positions were no triangle of the previous
   // call's mesh (check_arrangement_touching); the previous violations between triangles
   // found again carry over (any mesh may follow any other: where more than a quarter of
-  // the triangles changed, every pair is checked again). Exact; cost proportional to what
-  // changed, plus hashing the triangles and sorting their hashes.
+  // the triangles changed, every pair is checked again). A mesh with a repeated position or
+  // triangle is checked in full, and so is the one after it. Exact; cost proportional to
+  // what changed, plus hashing and sorting the triangles and the positions.
   std::vector<std::pair<int, int>> violations(const RoundedMesh& mesh);
 
  private:
@@ -37,6 +40,7 @@ class ViolationTracker {
     bool operator<(const Keyed& o) const { return hash < o.hash || (hash == o.hash && index < o.index); }
   };
   bool first_ = true;
+  bool previous_ambiguous_ = false;  // the last mesh repeated a position or a triangle
   std::vector<Corners> previous_;     // the last mesh's triangles' corners, by index
   std::vector<Keyed> previous_keys_;  // and their keys, sorted
   std::vector<std::pair<Corners, Corners>> previous_violating_;
