@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <random>
 
@@ -48,22 +49,57 @@ double relative_distance_to_boundary(const Q& e) {
 // The line from p to q meets the plane x = 1 (through (1,0,0), (1,1,0), (1,0,1)).
 const Triple kPlaneX1{Point{1, 0, 0}, Point{1, 1, 0}, Point{1, 0, 1}};
 
+// The filter is used only where long double has x87's 64-bit significand (elsewhere
+// certified_to_double declines everything, and its rates below would not hold).
+bool filter_here() { return tritri::detail::kWideFilterUseful && std::numeric_limits<long double>::digits == 64; }
+
 TEST(CertifiedToDouble, ExactTiesAreLeftToTheExactPathAndRoundToEven) {
-  // p + (q - p) / 2 with q_y - p_y two ulps of 1: y is halfway between two doubles.
+  if (!filter_here()) GTEST_SKIP() << "no 64-bit long double here";
+  // p + (q - p) / 2 with q_y - p_y two ulps of 1: y is halfway between two doubles; x and
+  // z are exact doubles (1, 1), so only the tie can make the filter decline. The control,
+  // q_y - p_y = 2^-51, puts y on a double: certified.
   struct Case {
-    double qy, even;
+    double qy, nearest;
+    bool tie;
   };
-  for (const Case c : {Case{1 + 0x1p-52, 1.0}, Case{1 + 0x3p-52, 1 + 0x1p-51}}) {
-    const Point p{0, 1, 0}, q{2, c.qy, 0};
+  for (const Case c :
+       {Case{1 + 0x1p-52, 1.0, true}, Case{1 + 0x3p-52, 1 + 0x1p-51, true}, Case{1 + 0x1p-51, 1 + 0x1p-52, false}}) {
+    const Point p{0, 1, 1}, q{2, c.qy, 1};
     const auto lpi = ImplicitPoint::lpi(p, q, kPlaneX1[0], kPlaneX1[1], kPlaneX1[2]);
     const Q3 e = *tritri_test::exact_lpi(p, q, kPlaneX1);
     ASSERT_EQ(e[1], (Q(1) + Q(c.qy)) / 2);
-    EXPECT_FALSE(tritri::certified_to_double(lpi).has_value()) << std::hexfloat << "q_y " << c.qy;
-    EXPECT_EQ(tritri::to_double(lpi)[1], c.even) << std::hexfloat << "q_y " << c.qy;
+    ASSERT_EQ(e[0], Q(1));
+    ASSERT_EQ(e[2], Q(1));
+    EXPECT_EQ(tritri::certified_to_double(lpi).has_value(), !c.tie) << std::hexfloat << "q_y " << c.qy;
+    EXPECT_EQ(tritri::to_double(lpi)[1], c.nearest) << std::hexfloat << "q_y " << c.qy;
   }
 }
 
+// The bound itself, on hand-made filtered values: q = 1 + 2^-53 - 2^-60 lies 2^-60 below
+// the boundary between 1 and 1 + 2^-52. A filter error just above that distance declines,
+// one well below it certifies 1; a denominator whose error bound reaches half of it declines.
+TEST(CertifiedToDouble, BoundAgainstTheDistanceToTheBoundary) {
+  if (!filter_here()) GTEST_SKIP() << "no 64-bit long double here";
+  using tritri::detail::WideFilteredValue;
+  using L = long double;
+  const L r = L(0x1p-53) - L(0x1p-60);
+  const WideFilteredValue exact_w(L(1), L(0));
+  double out = 0;
+  // ex = perm * depth * u (1 + 2^-20), u = 2^-64: perm 2^4 gives just over 2^-60.
+  EXPECT_FALSE(tritri::detail::certified_nearest_double(1.0, WideFilteredValue(r, L(0x1p4)), 1, exact_w, 1, out));
+  EXPECT_TRUE(tritri::detail::certified_nearest_double(1.0, WideFilteredValue(r, L(0x1p2)), 1, exact_w, 1, out));
+  EXPECT_EQ(out, 1.0);
+  // The same errors on the denominator's side: |x/w| ew / (|w| - ew) with x/w about 2^-53 is
+  // tiny, so only aw <= 2 ew (perm 2^63: ew just over 1/2) makes it decline.
+  const WideFilteredValue exact_x(r, L(0));
+  EXPECT_TRUE(
+      tritri::detail::certified_nearest_double(1.0, exact_x, 1, WideFilteredValue(L(1), L(0x1p40)), 1, out));
+  EXPECT_FALSE(
+      tritri::detail::certified_nearest_double(1.0, exact_x, 1, WideFilteredValue(L(1), L(0x1p63)), 1, out));
+}
+
 TEST(CertifiedToDouble, QuotientsNearRoundingBoundariesAreRightOrDeclined) {
+  if (!filter_here()) GTEST_SKIP() << "no 64-bit long double here";
   std::mt19937_64 rng(tritri_test::seed_for(61));
   std::uniform_real_distribution<double> unit(1.0, 2.0);
   const long long n = tritri_test::scaled_count(60000);
@@ -101,6 +137,7 @@ struct Cloud {
 };
 
 TEST(CertifiedToDouble, GeneratedLpisAndTpisAreTheNearestDoubles) {
+  if (!filter_here()) GTEST_SKIP() << "no 64-bit long double here";
   const Cloud clouds[] = {{1, 0, 50, 10}, {0x1p-10, 1, 90, 85}, {0x1p-7, 0x1p30, 90, 85}, {0x1p-20, 0x1p-10, 90, 85}};
   std::mt19937_64 rng(tritri_test::seed_for(62));
   std::uniform_real_distribution<double> sym(-1.0, 1.0);
