@@ -361,7 +361,7 @@ TEST(ViolationTracker, AStaleAnswerIsRejected) {
 }
 
 // Meshes whose check depends on vertex identities, not positions alone (two vertices at one
-// position, a triangle twice: nudging's moves can make them). Matching triangles by corner
+// position, a triangle twice: moved vertices can make them). Matching triangles by corner
 // positions alone got every step below wrong; the tracker checks such a mesh, and the next, in full.
 TEST(ViolationTracker, SameCornerPositionsOtherVertices) {
   // A quad a b c d as (a, b, c) (a, c, d), crossed by triangle 2; b moved onto d: triangle 0

@@ -18,9 +18,9 @@
 #include <tritri/projection.h>
 
 #include "arrangements/as_input.h"
+#include "arrangements/check_arrangement.h"
 #include "support/pair_fault.h"
 #include "rounding/rounding_grid.h"
-#include "rounding/violation_tracker.h"
 
 namespace arrangements {
 namespace {
@@ -117,10 +117,8 @@ Nudged nudge_conflicts(const RoundedMesh& start, double step, double move_limit,
     return n;
   };
 
-  // Each round moves a few corners: the tracker checks again only their triangles' pairs.
-  ViolationTracker tracker;
   for (out.rounds = 1;; ++out.rounds) {
-    const std::vector<std::pair<int, int>> violating = tracker.violations(m);
+    const std::vector<std::pair<int, int>> violating = check_arrangement(m, 0).violating_pairs;
     out.violations = violating.size();
     if (violating.empty() || out.rounds >= max_rounds) break;
     std::vector<int> conflict;

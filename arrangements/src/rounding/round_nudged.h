@@ -15,14 +15,12 @@
 // Termination: each move lowers the number of violating pairs of the whole mesh (only the
 // pairs of its triangles change), so there are at most as many moves as violations at the
 // start; a round without a move ends it, and so does max_rounds.
-// Cost per round: a check of the pairs with a triangle that moved (ViolationTracker; every
-// pair in the first round, and where a move put two vertices at one position), one box
-// search of the violating corners' triangles against all, then per corner and ring tried
-// 26 x (pairs of the corner's triangles with neighbours whose boxes meet) classifications
-// at most (a count stops where it reaches the current one; the corner's violating pairs are
-// counted first, so a position that leaves them violating stops after them). Meant for few
-// conflicts (round_safe calls it on at most 1024, or on a 20th of the triangles where that
-// is more).
+// Cost per round: one check of the mesh (check_arrangement), one box search of the
+// violating corners' triangles against all, then per corner and ring tried 26 x (pairs of
+// the corner's triangles with neighbours whose boxes meet) classifications at most (a
+// count stops where it reaches the current one; the corner's violating pairs are counted
+// first, so a position that leaves them violating stops after them). Meant for few conflicts (round_safe calls
+// it on at most 1024, or on a 20th of the triangles where that is more).
 #pragma once
 
 #include <cstddef>

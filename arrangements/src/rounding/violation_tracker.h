@@ -1,6 +1,6 @@
 // ViolationTracker: the violating pairs of a rounded mesh that changes a little from round
 // to round, checked again only where it changed. Shared by the passes and the last resorts
-// of round_safe (round_ladder.h, round_rerouting.cpp, round_per_vertex.cpp, round_nudged.cpp).
+// of round_safe (round_ladder.h, round_rerouting.cpp, round_per_vertex.cpp).
 #pragma once
 
 #include <array>
@@ -18,7 +18,7 @@ class ViolationTracker {
   // The violating pairs of `mesh` (triangle indices i < j, sorted), as check_arrangement
   // lists them, for any sequence of meshes. Precondition: no degenerate triangle
   // (mesh_on_positions drops them). Where no two vertices share a position and no triangle
-  // is repeated (mesh_on_positions makes such meshes; nudging's moves may not), whether a
+  // is repeated (mesh_on_positions makes such meshes; moved vertices may not), whether a
   // pair violates depends only on the positions of its corners, so the first call checks
   // every pair and later ones classify
   // only the pairs with a triangle whose corner positions were no triangle of the previous
