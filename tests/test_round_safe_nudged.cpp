@@ -16,7 +16,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
-#include <numbers>
 #include <set>
 #include <string>
 #include <vector>
@@ -26,11 +25,10 @@
 #include "arrangements/check_arrangement.h"
 #include "arrangements/load_triangle_soup.h"
 #include "rounding/round_nudged.h"
-#include "support/bounding_box.h"
-#include "support/mesh_generators.h"
 #include "rounding/rounding_grid.h"
 #include "support/safe_rounding_checks.h"
 #include "support/shared_meshes.h"
+#include "support/sweep_variants.h"
 #include "support/test_scale.h"
 
 namespace {
@@ -95,25 +93,13 @@ TEST(RoundSafeNudged, NothingMovesBeyondTheLimit) {
   EXPECT_EQ(once.rounds, 1);
 }
 
-// The mesh and a copy turned by pi about its box centre, as bench/round_safe_sweep.py makes
-// its rot2 variant (seed 1: the same axis, the same operations in the same order, so the
-// same doubles), cropped to the triangles whose boxes meet the box of the copy's triangles
-// 35, 217, 258, 260, 261 and 283 (where the conflicts were), vertices in first-index order.
+// The sweep's rot2 variant of the mesh (support/sweep_variants.h), cropped to the triangles
+// whose boxes meet the box of the copy's triangles 35, 217, 258, 260, 261 and 283 (where
+// the conflicts were), vertices in first-index order.
 TriangleSoup turned_crash_region(const TriangleSoup& mesh) {
-  // The sweep adds the centre first (turned adds it last: other doubles).
-  const RotationMatrix R =
-      rotation_matrix({-0x1.f2e5f53200134p-1, -0x1.abd2510642aebp-3, 0x1.53e34acd01f7bp-4}, std::numbers::pi);
-  const Vec3 centre = bounding_box(mesh.vertices).centre();
-  std::vector<Vec3> V = mesh.vertices;
-  for (const Vec3& p : mesh.vertices) {
-    const Vec3 d = {p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
-    Vec3 q;
-    for (int k = 0; k < 3; ++k) q[k] = centre[k] + R[k][0] * d[0] + R[k][1] * d[1] + R[k][2] * d[2] + 0.0;
-    V.push_back(q);
-  }
-  std::vector<Tri> F = mesh.triangles;
-  const int n = static_cast<int>(mesh.vertices.size());
-  for (const Tri& f : mesh.triangles) F.push_back({f[0] + n, f[1] + n, f[2] + n});
+  const TriangleSoup both = tritri_test::sweep_rot2(mesh);
+  const std::vector<Vec3>& V = both.vertices;
+  const std::vector<Tri>& F = both.triangles;
   const std::size_t copy = mesh.triangles.size();
   Vec3 rlo = V[F[copy + 35][0]], rhi = rlo;
   for (int r : {35, 217, 258, 260, 261, 283})

@@ -64,9 +64,11 @@
 //   it stalls with conflicts on fewer than 5% of the triangles, its best mesh is arranged
 //   again (exactly: the crossings its rounding left become points), rounded to nearest
 //   with the snap of level 0 and rerouted again, in up to 8 cycles (stopping when the mesh
-//   grows by a tenth); each cycle adds its rounding move and an ulp per round to the bound. Layers
-//   crossing at grazing angles with few conflicts settle this way (three copies of a
-//   10 x 19 sphere rotated about its box centre: 7 cycles, 1.4e-15 of the diagonal).
+//   grows by a tenth or, where the best cycle so far left more than 64 conflicts, at one
+//   that leaves no fewer); each cycle adds its rounding move and an ulp per round to the
+//   bound. Layers crossing at grazing angles with few conflicts settle this way (three
+//   copies of a 10 x 19 sphere rotated about its box centre: 7 cycles, 1.3e-15 of the
+//   diagonal).
 //   Rounding per vertex (src/rounding/round_per_vertex.h), when level 1 fails too (before levels
 //   2-4: it moves only the vertices of conflicting triangles), from the
 //   arrangement's triangles, then from the rerouted ones. Every vertex of the exact
@@ -116,8 +118,8 @@
 //   violating pairs move one at a time to the position 1, 2, 4, ... 1024 ulps around them
 //   (the nearest ring that helps) that leaves the fewest violating pairs, if fewer; triangles
 //   stay. This settles a grazing crossing far from any vertex (three copies of a 10 x 21
-//   sphere: 2 vertices moved, 1.2e-15 of the diagonal). In up to 8 cycles, as rerouting's:
-//   where nudging stalls, its mesh is arranged again (the crossings it left become points),
+//   sphere: 2 vertices moved, 1.2e-15 of the diagonal). In up to 8 cycles (without
+//   rerouting's stop at a cycle that leaves no fewer conflicts): where nudging stalls, its mesh is arranged again (the crossings it left become points),
 //   rounded with the snap of level 0, rerouted and nudged again (stopping when the mesh
 //   grows by a tenth); each cycle adds its rounding move, an ulp per round of rerouting and
 //   its nudges to the bound. Faces crossing at 1e-5 rad beside triangles a few thousand
@@ -125,8 +127,9 @@
 //   785 conflicts, nudged to 149, then 8, 6, 4 and none in 4 cycles, 2.1e-13 of the diagonal).
 //   Termination: the passes have no proof (3D snap rounding with a proven bound needs a
 //   grid far coarser than doubles): at most kLevels x 4 = 20 of them. Rerouting stops
-//   after 3 rounds without fewer violations, its cycles after 8. Rounding per vertex terminates by
-//   construction (each failed round raises a bounded level of some vertex) and gives up
+//   after 3 rounds without fewer violations, its cycles after 8 (or sooner, above).
+//   Rounding per vertex terminates by construction (each failed round raises a bounded
+//   level of some vertex) and gives up
 //   after two rounds without fewer violations, at a vertex needing more than 2^32 ulps,
 //   or when options.max_passes (passes and rounds together) is reached. Nudging lowers
 //   the violations with every move, and stops at a round without one; its cycles after 8. What is

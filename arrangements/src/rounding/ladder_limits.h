@@ -16,6 +16,10 @@ namespace arrangements::detail {
 constexpr int kLevels = 5;
 constexpr int kPassesPerLevel = 4;
 constexpr int kRerouteCycles = 8;
+// Rerouting's cycles stop at one that leaves no fewer conflicts than the best before it
+// when that best left more than this; with no more, they go on (their walk often ends at
+// none).
+constexpr std::size_t kStopCyclesAbove = 64;
 constexpr int kReroutePasses = 64;  // passes and rounds of round_safe when its rerouting stops
 constexpr int kInputBudget = 32;  // passes and rounds of round_safe on each changed input
 constexpr int kNudgeRounds = 64;  // kept for nudging (in cycles) on each changed input, beyond its kInputBudget

@@ -18,7 +18,8 @@
 //      wider than 2^22 ulps, where level 0 left many conflicts).
 //   3. Rerouting (round_rerouting.h, reroute_in_cycles): vertices stay at their nearest
 //      doubles; slivers collapse and edges and faces reroute through vertices within an
-//      ulp; in cycles of arranging again and rounding while the conflicts are few. Its
+//      ulp; in cycles of arranging again and rounding while the conflicts are few (and,
+//      above kStopCyclesAbove, fewer than the best cycle before left). Its
 //      bound adds an ulp per round of rerouting.
 //   4. Merged input (round_merged_input.h), only with options.input: input vertices
 //      within 4^k ulps (k = 1..4) merged, the changed input arranged and rounded by a
@@ -248,6 +249,13 @@ class Ladder {
       if (now.rerouting.rerouted > 0) cycle_move += ulp_ * now.rerouting.rounds;
       const std::size_t violations = now.rerouting.violations;
       closer(violations);
+      // A cycle that leaves no fewer conflicts than the best one before it, when that left
+      // many, means arranging again recreates what rerouting removes: on sphere_copies_4
+      // the later cycles only swung upwards (2,574, 1,244, then 2,114, 5,026, 5,249,
+      // 5,724), so they stop there. With a few left, cycles walk and often end at none
+      // (sphere2 turned by pi: 6, 5, 5, then none): they go on.
+      const bool no_fewer_than_best =
+          fewest_ && violations >= fewest_violations_ && fewest_violations_ > kStopCyclesAbove;
       if (violations > 0 && (!fewest_ || violations < fewest_violations_)) {
         fewest_ = now.mesh;
         fewest_violations_ = violations;
@@ -266,7 +274,8 @@ class Ladder {
       }
       // Arranging again pays only for few conflicts; a cycle that grows the mesh by more
       // than a tenth feeds on itself.
-      if (!few_conflicts(violations, triangles) || triangles > mesh_.triangles.size() + mesh_.triangles.size() / 10 ||
+      if (no_fewer_than_best || !few_conflicts(violations, triangles) ||
+          triangles > mesh_.triangles.size() + mesh_.triangles.size() / 10 ||
           r_.passes >= reroute_limit || cycle_move > move_limit_)
         return std::nullopt;
       ++r_.reroute_cycles;

@@ -117,8 +117,27 @@ Nudged nudge_conflicts(const RoundedMesh& start, double step, double move_limit,
     return n;
   };
 
+  // The violating pairs of each round: all of them checked in the first; later, the pairs
+  // with a triangle a move changed are checked again and the others carry over. Triangles
+  // never change, only positions, and a pair's verdict depends on its corners' positions
+  // and identities alone, so this is the full check's result. Matched by index, not by
+  // position as ViolationTracker does: moves may put two vertices at one position, where
+  // the tracker falls back to full checks.
+  std::vector<std::pair<int, int>> violating = check_arrangement(m, 0).violating_pairs;
+  std::vector<char> changed(nt, 0);
   for (out.rounds = 1;; ++out.rounds) {
-    const std::vector<std::pair<int, int>> violating = check_arrangement(m, 0).violating_pairs;
+    if (out.rounds > 1 && static_cast<std::size_t>(std::count(changed.begin(), changed.end(), 1)) > nt / 4) {
+      violating = check_arrangement(m, 0).violating_pairs;  // the full check costs less (ViolationTracker's rule)
+      std::fill(changed.begin(), changed.end(), 0);
+    } else if (out.rounds > 1) {
+      std::vector<std::pair<int, int>> now = check_arrangement_touching(m, changed, 0).violating_pairs;
+      for (const auto& pair : violating)
+        if (!changed[pair.first] && !changed[pair.second]) now.push_back(pair);
+      std::sort(now.begin(), now.end());
+      now.erase(std::unique(now.begin(), now.end()), now.end());
+      violating = std::move(now);
+      std::fill(changed.begin(), changed.end(), 0);
+    }
     out.violations = violating.size();
     if (violating.empty() || out.rounds >= max_rounds) break;
     std::vector<int> conflict;
@@ -184,6 +203,7 @@ Nudged nudge_conflicts(const RoundedMesh& start, double step, double move_limit,
         const std::size_t best = std::min_element(faults.begin(), faults.end()) - faults.begin();
         if (faults[best] >= now) continue;
         for (int k = 0; k < 3; ++k) m.vertices[v][k] += offset[ring + best][k];
+        for (int t : star[v]) changed[t] = 1;
         moved = true;
         break;
       }

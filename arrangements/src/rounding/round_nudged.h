@@ -15,7 +15,8 @@
 // Termination: each move lowers the number of violating pairs of the whole mesh (only the
 // pairs of its triangles change), so there are at most as many moves as violations at the
 // start; a round without a move ends it, and so does max_rounds.
-// Cost per round: one check of the mesh (check_arrangement), one box search of the
+// Cost per round: one check (check_arrangement the first round, later ones only the pairs
+// with a triangle that the last round's moves changed), one box search of the
 // violating corners' triangles against all, then per corner and ring tried 26 x (pairs of
 // the corner's triangles with neighbours whose boxes meet) classifications at most (a
 // count stops where it reaches the current one; the corner's violating pairs are counted
