@@ -51,7 +51,7 @@ const Triple kPlaneX1{Point{1, 0, 0}, Point{1, 1, 0}, Point{1, 0, 1}};
 
 // The filter is used only where long double has x87's 64-bit significand (elsewhere
 // certified_to_double declines everything, and its rates below would not hold).
-bool filter_here() { return tritri::detail::kWideFilterUseful && std::numeric_limits<long double>::digits == 64; }
+bool filter_here() { return tritri::detail::kCertifiedToDoubleRuns; }
 
 TEST(CertifiedToDouble, ExactTiesAreLeftToTheExactPathAndRoundToEven) {
   if (!filter_here()) GTEST_SKIP() << "no 64-bit long double here";

@@ -119,7 +119,8 @@
 //   (the nearest ring that helps) that leaves the fewest violating pairs, if fewer; triangles
 //   stay. This settles a grazing crossing far from any vertex (three copies of a 10 x 21
 //   sphere: 2 vertices moved, 1.2e-15 of the diagonal). In up to 8 cycles (without
-//   rerouting's stop at a cycle that leaves no fewer conflicts): where nudging stalls, its mesh is arranged again (the crossings it left become points),
+//   rerouting's stop at a cycle that leaves no fewer conflicts): where nudging stalls, its
+//   mesh is arranged again (the crossings it left become points),
 //   rounded with the snap of level 0, rerouted and nudged again (stopping when the mesh
 //   grows by a tenth); each cycle adds its rounding move, an ulp per round of rerouting and
 //   its nudges to the bound. Faces crossing at 1e-5 rad beside triangles a few thousand

@@ -21,6 +21,7 @@
 #include "arrangements/check_arrangement.h"
 #include "support/pair_fault.h"
 #include "rounding/rounding_grid.h"
+#include "rounding/violation_tracker.h"
 
 namespace arrangements {
 namespace {
@@ -124,19 +125,22 @@ Nudged nudge_conflicts(const RoundedMesh& start, double step, double move_limit,
   // position as ViolationTracker does: moves may put two vertices at one position, where
   // the tracker falls back to full checks.
   std::vector<std::pair<int, int>> violating = check_arrangement(m, 0).violating_pairs;
-  std::vector<char> changed(nt, 0);
+  std::vector<char> changed(nt, 0);  // the triangles of the corners moved since the last check
+  std::size_t changed_count = 0;
   for (out.rounds = 1;; ++out.rounds) {
-    if (out.rounds > 1 && static_cast<std::size_t>(std::count(changed.begin(), changed.end(), 1)) > nt / 4) {
-      violating = check_arrangement(m, 0).violating_pairs;  // the full check costs less (ViolationTracker's rule)
+    if (out.rounds > 1) {
+      if (full_check_costs_less(changed_count, nt)) {
+        violating = check_arrangement(m, 0).violating_pairs;
+      } else {
+        std::vector<std::pair<int, int>> now = check_arrangement_touching(m, changed, 0).violating_pairs;
+        for (const auto& pair : violating)
+          if (!changed[pair.first] && !changed[pair.second]) now.push_back(pair);
+        std::sort(now.begin(), now.end());
+        now.erase(std::unique(now.begin(), now.end()), now.end());
+        violating = std::move(now);
+      }
       std::fill(changed.begin(), changed.end(), 0);
-    } else if (out.rounds > 1) {
-      std::vector<std::pair<int, int>> now = check_arrangement_touching(m, changed, 0).violating_pairs;
-      for (const auto& pair : violating)
-        if (!changed[pair.first] && !changed[pair.second]) now.push_back(pair);
-      std::sort(now.begin(), now.end());
-      now.erase(std::unique(now.begin(), now.end()), now.end());
-      violating = std::move(now);
-      std::fill(changed.begin(), changed.end(), 0);
+      changed_count = 0;
     }
     out.violations = violating.size();
     if (violating.empty() || out.rounds >= max_rounds) break;
@@ -203,7 +207,8 @@ Nudged nudge_conflicts(const RoundedMesh& start, double step, double move_limit,
         const std::size_t best = std::min_element(faults.begin(), faults.end()) - faults.begin();
         if (faults[best] >= now) continue;
         for (int k = 0; k < 3; ++k) m.vertices[v][k] += offset[ring + best][k];
-        for (int t : star[v]) changed[t] = 1;
+        for (int t : star[v])
+          if (!changed[t]) changed[t] = 1, ++changed_count;
         moved = true;
         break;
       }

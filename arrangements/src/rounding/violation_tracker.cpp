@@ -104,9 +104,7 @@ std::vector<std::pair<int, int>> ViolationTracker::violations(const RoundedMesh&
     }
     changed_count = static_cast<std::size_t>(std::count(changed.begin(), changed.end(), 1));
   }
-  // Where most triangles changed, the full check (stage 2's parallel search) costs less
-  // than the changed ones' box search against all.
-  if (changed_count > nt / 4 || ambiguous || previous_ambiguous_) {
+  if (full_check_costs_less(changed_count, nt) || ambiguous || previous_ambiguous_) {
     violating = check_arrangement(mesh, 0).violating_pairs;
     first_ = false;
   } else {

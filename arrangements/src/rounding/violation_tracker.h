@@ -13,6 +13,11 @@
 
 namespace arrangements {
 
+// Where more than a quarter of a mesh's triangles changed, checking every pair
+// (check_arrangement, stage 2's parallel search) costs less than the changed ones' box
+// search against all (check_arrangement_touching).
+inline bool full_check_costs_less(std::size_t changed, std::size_t triangles) { return changed > triangles / 4; }
+
 class ViolationTracker {
  public:
   // The violating pairs of `mesh` (triangle indices i < j, sorted), as check_arrangement

@@ -31,6 +31,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -347,6 +348,12 @@ inline bool certified_nearest_double(double o, const WideFilteredValue& x, int x
 
 }  // namespace detail
 
+namespace detail {
+// Where certified_to_double filters at all: only x87's 64-bit long double; elsewhere long
+// double is double (no gain) or software quad (slower than the exact path).
+inline constexpr bool kCertifiedToDoubleRuns = kWideFilterUseful && std::numeric_limits<long double>::digits == 64;
+}  // namespace detail
+
 // to_double's fast path alone: the nearest doubles to p's coordinates when the long double
 // filter certifies all three, else nullopt (also for explicit points, and where long
 // double is not x87-like: detail::kWideFilterUseful). Evaluated as o + W (p - o) / W with
@@ -355,8 +362,7 @@ inline bool certified_nearest_double(double o, const WideFilteredValue& x, int x
 // a result is the correctly rounded double; ties, and points with a coordinate that is 0
 // or outside [2^-1020, 2^1020] in magnitude, are declined.
 inline std::optional<std::array<double, 3>> certified_to_double(const ImplicitPoint& p) {
-  // Only x87's 64-bit long double: elsewhere it is double (no gain) or software quad (slower).
-  if constexpr (!detail::kWideFilterUseful || std::numeric_limits<long double>::digits != 64) return std::nullopt;
+  if constexpr (!detail::kCertifiedToDoubleRuns) return std::nullopt;
   if (p.is_explicit()) return std::nullopt;
   const std::array<double, 3>& o = p.approx();
   if (!std::isfinite(o[0]) || !std::isfinite(o[1]) || !std::isfinite(o[2])) return std::nullopt;
