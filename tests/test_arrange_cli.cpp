@@ -169,6 +169,11 @@ TEST(ArrangeCli, EveryHostileOptionValueIsAUsageError) {
   cases.push_back({mesh, "--stats", "--round-max-move", "0.5"});
   cases.push_back({mesh, "--stats", "--round", "nearest", "--round-max-move", "0.5"});
   cases.push_back({mesh, "--stats", "--round", "safe", "--round-max-move", "0.5", "--round-max-move", "0.5"});
+  // The steps left out: known names, comma-separated, only with --round safe, once.
+  for (const std::string v : {"", "bogus", "nudging,", ",nudging", "nudging,,rerouting", "Nudging", "level_1"})
+    cases.push_back({mesh, "--stats", "--round", "safe", "--round-without", v});
+  cases.push_back({mesh, "--stats", "--round-without", "nudging"});
+  cases.push_back({mesh, "--stats", "--round", "safe", "--round-without", "nudging", "--round-without", "nudging"});
   expect_usage_errors(ARRANGE_BIN, "arrange", cases, dir.path());
   EXPECT_EQ(dir.entries(), std::set<std::string>({"stdout.txt", "stderr.txt", "two_triangles.off"}))
       << "nothing was written";

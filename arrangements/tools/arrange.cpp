@@ -3,6 +3,7 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -82,6 +83,11 @@ options:
                           64th). A model only a few hundred ulps wide (tiny and far from
                           the origin) settles only with moves of a fifth of its size or
                           more: F = 1 accepts them
+  --round-without STEPS   with --round safe, for studies of the ladder: leave out these
+                          steps (comma-separated: merged-nearest, rerouting,
+                          merged-input, snapped-layers, snapped-contacts, level-1,
+                          per-vertex, coarse-levels, nudging); a mesh that only a
+                          left-out step settles is refused (exit status 4)
   --check                 verify the arrangement exactly: every pair of triangles with
                           overlapping boxes meets only in shared vertices and edges
                           (tritri on the implicit points; with --round safe, on the rounded
@@ -125,6 +131,26 @@ std::string usage() {
          kUsageEnd;
 }
 
+// The RoundSafeOptions::without bits of a comma-separated list of step names.
+unsigned round_steps(const std::string& list, const arrangements::detail::CommandLine& args) {
+  using arrangements::kRoundStepNames;
+  unsigned bits = 0;
+  std::size_t begin = 0;
+  for (;;) {
+    const std::size_t end = std::min(list.find(',', begin), list.size());
+    const std::string name = list.substr(begin, end - begin);
+    const auto found = std::find(kRoundStepNames.begin(), kRoundStepNames.end(), name);
+    if (found == kRoundStepNames.end()) {
+      std::string known;
+      for (const auto n : kRoundStepNames) known += (known.empty() ? "" : ", ") + std::string(n);
+      args.usage_error("unknown rounding step '" + name + "' in --round-without (known: " + known + ")");
+    }
+    bits |= 1u << (found - kRoundStepNames.begin());
+    if (end == list.size()) return bits;
+    begin = end + 1;
+  }
+}
+
 int run(int argc, char** argv) {
   using namespace arrangements;
   std::vector<std::string> inputs;
@@ -136,6 +162,7 @@ int run(int argc, char** argv) {
   std::optional<BooleanOp> boolean_op;
   std::optional<std::string> csg;
   double round_max_move = RoundSafeOptions{}.max_move_relative;
+  unsigned round_without = 0;
   long long max_memory_mb = 0;  // 0: no budget
   constexpr long long kMaxMemoryMb = 1LL << 30;  // 1 PB: beyond any machine, no overflow in bytes
   detail::CommandLine args("arrange", argc, argv);
@@ -159,6 +186,8 @@ int run(int argc, char** argv) {
         args.usage_error("unknown rounding '" + round + "' (known: nearest, safe)");
     } else if (a == "--round-max-move") {
       round_max_move = args.positive_number("--round-max-move");
+    } else if (a == "--round-without") {
+      round_without = round_steps(args.value("--round-without"), args);
     } else if (a == "--boolean") {
       const std::string op = args.value("--boolean");
       if (op == "union") boolean_op = BooleanOp::Union;
@@ -189,6 +218,7 @@ int run(int argc, char** argv) {
   if (exact && args.given("--round"))
     args.usage_error("--round and --exact exclude each other (--exact does not round)");
   if (args.given("--round-max-move") && round != "safe") args.usage_error("--round-max-move needs --round safe");
+  if (args.given("--round-without") && round != "safe") args.usage_error("--round-without needs --round safe");
   if (output) {
     using arrangements::detail::kWriteFormats;
     const auto format = arrangements::detail::format_of(*output, kWriteFormats);
@@ -236,6 +266,7 @@ int run(int argc, char** argv) {
             RoundSafeOptions ro;
             ro.threads = workers;
             ro.max_move_relative = round_max_move;
+            ro.without = round_without;
             // The input-level steps re-arrange the input: not for a Boolean (its output is not
             // the input's arrangement).
             if constexpr (std::is_same_v<std::decay_t<decltype(soup)>, TriangleSoup>)

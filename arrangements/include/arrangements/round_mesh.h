@@ -164,13 +164,36 @@
 // pairs' triangles; per round of a last resort the same check.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <stdexcept>
+#include <string_view>
 
 #include "arrangements/arrange_stats.h"
 #include "arrangements/output_mesh.h"
 
 namespace arrangements {
+
+// The steps of round_safe after level 0's passes, in the order they are tried (above;
+// src/rounding/round_ladder.h lists them with the invariant each keeps). A study of what
+// each one settles that no other does leaves some out: RoundSafeOptions::without.
+// Leaving out rerouting leaves out nudging too (it starts from rerouting's best cycle).
+enum class RoundStep : unsigned {
+  merged_input_at_nearest,  // merged input at nearest (one pass), before rerouting
+  rerouting,                // rerouting and its cycles
+  merged_input,             // merging input vertices within 4 to 256 ulps
+  snapped_layers,           // snapping nearly coplanar faces onto one plane
+  snapped_contacts,         // snapping corners onto the plane of a face they touch
+  level_1,                  // the passes on the grid of 2^8 ulps
+  per_vertex,               // rounding per vertex
+  coarse_levels,            // levels 2 to 4, each after merging the input at its scale
+  nudging,                  // nudging and its cycles
+};
+inline constexpr std::size_t kRoundSteps = 9;
+// Their names, indexed by RoundStep (as `arrange --round-without` takes them).
+inline constexpr std::array<std::string_view, kRoundSteps> kRoundStepNames = {
+    "merged-nearest", "rerouting",  "merged-input",  "snapped-layers", "snapped-contacts",
+    "level-1",        "per-vertex", "coarse-levels", "nudging"};
 
 struct RoundSafeOptions {
   int max_passes = 384;  // passes of rounding and arranging, then rounds of the last resorts
@@ -188,6 +211,9 @@ struct RoundSafeOptions {
   // The input that `mesh` is the arrangement of (double path only; optional): enables the
   // input steps (merging input vertices, snapping nearly coplanar faces).
   const TriangleSoup* input = nullptr;
+  // The steps left out, bit 1 << RoundStep each (0: every step; for studies of the ladder:
+  // a mesh that only a left-out step settles is refused).
+  unsigned without = 0;
 };
 
 struct RoundReport {

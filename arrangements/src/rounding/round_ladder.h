@@ -16,7 +16,7 @@
 //   2. Merged input at nearest (merged_input_at_nearest), only with options.input: input
 //      vertices within 4 ulps merged, the changed input given one pass at level 0 (models
 //      wider than 2^22 ulps, where level 0 left many conflicts).
-//   3. Rerouting (round_rerouting.h, reroute_in_cycles): vertices stay at their nearest
+//   3. Rerouting (round_rerouting.h; reroute_in_cycles, ladder_cycles.h): vertices stay at their nearest
 //      doubles; slivers collapse and edges and faces reroute through vertices within an
 //      ulp; in cycles of arranging again and rounding while the conflicts are few (and,
 //      above kStopCyclesAbove, fewer than the best cycle before left). Its
@@ -33,10 +33,11 @@
 //      from the first rerouting's.
 //   8. Levels 2 to 4: each after merging the input within its spacing (`stable`
 //      distances only), the passes of 1 on grids of 2^(8j) ulps.
-//   9. Nudging (round_nudged.h, nudge_in_cycles), the last step: the corners of the
+//   9. Nudging (round_nudged.h; nudge_in_cycles, ladder_cycles.h), the last step: the corners of the
 //      conflicts that rerouting's best cycle left move by 1 to 1024 ulps one at a time
 //      where that leaves fewer; in cycles of arranging again and rerouting.
-// Every step counts its passes against options.max_passes (less the nudging reserve).
+// Every step counts its passes against options.max_passes (less the nudging reserve). A
+// study leaves steps 2-9 out by options.without (RoundStep), in every ladder it starts.
 #pragma once
 
 #include <algorithm>
@@ -57,7 +58,6 @@
 #include "rounding/ladder_limits.h"
 #include "rounding/round_merged_input.h"
 #include "rounding/round_snapped_planes.h"
-#include "rounding/round_nudged.h"
 #include "rounding/round_per_vertex.h"
 #include "rounding/round_refusal.h"
 #include "rounding/round_rerouting.h"
@@ -113,43 +113,53 @@ class Ladder {
     if (auto done = passes_at_level(0)) return *done;
     std::size_t merged_before = 0, snapped_before = 0;  // vertices the last input change moved
     // The steps in the order of the list at the top of this file: the smallest change first.
-    if (auto done = merged_input_at_nearest()) return *done;
+    if (uses(RoundStep::merged_input_at_nearest))
+      if (auto done = merged_input_at_nearest()) return *done;
     // Rerouting moves the surface by an ulp per round only, so it comes before the coarser
     // levels and the input changes.
     exact_and_nearest(mesh_, exact_, nearest_positions_);
-    if (auto done = reroute_in_cycles()) return *done;
+    if (uses(RoundStep::rerouting))
+      if (auto done = reroute_in_cycles()) return *done;
     // Merged input within 4, 16, 64, then 256 ulps (before the grids' 2^8 ulps or more).
-    if (auto done = input_step(1, 4, false, merged_before, &Ladder::merge_within, &MergedInput::merged,
-                               &RoundReport::merged_input))
-      return *done;
+    if (uses(RoundStep::merged_input))
+      if (auto done = input_step(1, 4, false, merged_before, &Ladder::merge_within, &MergedInput::merged,
+                                 &RoundReport::merged_input))
+        return *done;
     // Snapped planes: near-coplanar layers, then corners near a face they touch (an edge on
     // a face that a turn left 1e-17 off it), within 4, 16, then 64 ulps.
-    if (auto done = input_step(1, 3, false, snapped_before, &Ladder::snap_layers_within, &SnappedPlanes::moved,
-                               &RoundReport::snapped_vertices))
-      return *done;
-    if (auto done = input_step(1, 3, false, snapped_before, &Ladder::snap_contacts_within,
-                               &SnappedPlanes::moved, &RoundReport::snapped_vertices))
-      return *done;
+    if (uses(RoundStep::snapped_layers))
+      if (auto done = input_step(1, 3, false, snapped_before, &Ladder::snap_layers_within, &SnappedPlanes::moved,
+                                 &RoundReport::snapped_vertices))
+        return *done;
+    if (uses(RoundStep::snapped_contacts))
+      if (auto done = input_step(1, 3, false, snapped_before, &Ladder::snap_contacts_within,
+                                 &SnappedPlanes::moved, &RoundReport::snapped_vertices))
+        return *done;
     // Level 1, then rounding per vertex (only the vertices of conflicts move: a far smaller
     // change, where it settles, than the levels below).
-    if (r_.passes < budget_ && levels_ > 1)
+    if (uses(RoundStep::level_1) && r_.passes < budget_ && levels_ > 1)
       if (auto done = passes_at_level(1)) return *done;
-    if (auto done = round_each_vertex()) return *done;
+    if (uses(RoundStep::per_vertex))
+      if (auto done = round_each_vertex()) return *done;
     // The coarser levels, each after merging the input within its spacing (copies moved by
     // 1e-9 of the size and turned by 1e-7 rad coincide, a smaller change than the grid);
     // merges that catch only some copies leave layers crossing, so only `stable` distances.
-    for (int level = 2; level < levels_ && r_.passes < budget_; ++level) {
+    for (int level = 2; uses(RoundStep::coarse_levels) && level < levels_ && r_.passes < budget_; ++level) {
       if (auto done = input_step(4 * level - 3, 4 * level, true, merged_before, &Ladder::merge_within,
                                  &MergedInput::merged, &RoundReport::merged_input))
         return *done;
       if (auto done = passes_at_level(level)) return *done;
     }
-    if (auto done = nudge_in_cycles()) return *done;
+    if (uses(RoundStep::nudging))
+      if (auto done = nudge_in_cycles()) return *done;
     refuse();
   }
 
  private:
   using Found = std::optional<RoundedMesh>;
+
+  // Whether options.without leaves `step` in (a study of the ladder leaves some out).
+  bool uses(RoundStep step) const { return ((options_.without >> static_cast<unsigned>(step)) & 1u) == 0; }
 
   // The result, with the report filled, when within the move limit, not emptied and, where
   // options.keep_closed asks, closed.
@@ -205,86 +215,14 @@ class Ladder {
     return std::nullopt;
   }
 
-  // The step the cycles of rerouting and of nudging share: `m` arranged again (a pass; the
-  // crossings its rounding left become points) and rounded to nearest, new points within
-  // an ulp snapped to a double vertex as the passes do; `move` receives the rounding's.
-  RoundedMesh arrange_and_round(const RoundedMesh& m, double& move) {
-    ++r_.passes;
-    const RoundedMesh clean = mesh_on_positions(m, options_.keep_closed);
-    ArrangeStats again;
-    return round_to_grid(arrange_locally(clean, tracker_.violations(clean), arrange_options_, again), 0, ulp_, move);
-  }
-
-  // Rerouting of `m` (round_rerouting.h) within max_rounds, and its best mesh.
+  // The cycles of rerouting and of nudging (ladder_cycles.h).
+  RoundedMesh arrange_and_round(const RoundedMesh& m, double& move);
   struct Rerouted {
     Rerouting rerouting;
     RoundedMesh mesh;
   };
-  Rerouted reroute(const RoundedMesh& m, int max_rounds) {
-    Rerouting now = reroute_conflicts(m.vertices, m.triangles, m.source, m.label_set, m.label_sets, ulp_, max_rounds,
-                                      tracker_, options_.keep_closed);
-    r_.passes += now.rounds;
-    RoundedMesh best =
-        mesh_on_positions(m.vertices, now.triangles, now.source, now.label_set, now.label_sets, options_.keep_closed)
-            .mesh;
-    return {std::move(now), std::move(best)};
-  }
-
-  // Rerouting, in cycles: when one stalls, its best mesh is arranged again and rounded
-  // (arrange_and_round), and rerouting goes on from there. The bound adds each cycle's
-  // rounding move and an ulp per round of its rerouting. Keeps the first cycle's rerouting
-  // (for rounding per vertex) and the cycle that left the fewest conflicts (for nudging).
-  Found reroute_in_cycles() {
-    // The first cycle starts from the arrangement on its nearest doubles.
-    RoundedMesh cycle_mesh{nearest_positions_, mesh_.triangles, mesh_.source, mesh_.label_set, mesh_.label_sets};
-    double cycle_move = largest_distance(exact_, nearest_positions_);
-    std::size_t rerouted = 0;
-    // Rerouting stops at kReroutePasses, leaving the rest of the budget to the steps below.
-    const int reroute_limit = std::min(budget_, kReroutePasses);
-    for (int cycle = 0; cycle < kRerouteCycles && r_.passes < reroute_limit; ++cycle) {
-      Rerouted now = reroute(cycle_mesh, reroute_limit - r_.passes);
-      rerouted += now.rerouting.rerouted;
-      // Each round of rerouting moves the surface by an ulp at most (a vertex put on an
-      // edge or a face lies within an ulp of it): rounds x ulp bounds the cycle's move.
-      if (now.rerouting.rerouted > 0) cycle_move += ulp_ * now.rerouting.rounds;
-      const std::size_t violations = now.rerouting.violations;
-      closer(violations);
-      // A cycle that leaves no fewer conflicts than the best one before it, when that left
-      // many, means arranging again recreates what rerouting removes: on sphere_copies_4
-      // the later cycles only swung upwards (2,574, 1,244, then 2,114, 5,026, 5,249,
-      // 5,724), so they stop there. With a few left, cycles walk and often end at none
-      // (sphere2 turned by pi: 6, 5, 5, then none): they go on.
-      const bool no_fewer_than_best =
-          fewest_ && violations >= fewest_violations_ && fewest_violations_ > kStopCyclesAbove;
-      if (violations > 0 && (!fewest_ || violations < fewest_violations_)) {
-        fewest_ = now.mesh;
-        fewest_violations_ = violations;
-        fewest_move_ = cycle_move;
-        fewest_rerouted_ = rerouted;
-        fewest_cycles_ = cycle;
-      }
-      const std::size_t triangles = now.mesh.triangles.size();
-      RoundedMesh best = std::move(now.mesh);
-      if (cycle == 0) first_rerouting_ = std::move(now.rerouting);
-      if (violations == 0) {
-        r_.rerouted = rerouted;
-        if (auto done = finish(std::move(best), cycle_move, 0.0)) return done;
-        r_.rerouted = 0;
-        return std::nullopt;
-      }
-      // Arranging again pays only for few conflicts; a cycle that grows the mesh by more
-      // than a tenth feeds on itself.
-      if (no_fewer_than_best || !few_conflicts(violations, triangles) ||
-          triangles > mesh_.triangles.size() + mesh_.triangles.size() / 10 ||
-          r_.passes >= reroute_limit || cycle_move > move_limit_)
-        return std::nullopt;
-      ++r_.reroute_cycles;
-      double move_now = 0;
-      cycle_mesh = arrange_and_round(best, move_now);
-      cycle_move += move_now;
-    }
-    return std::nullopt;
-  }
+  Rerouted reroute(const RoundedMesh& m, int max_rounds);
+  Found reroute_in_cycles();
 
   // Back to the input, when given: a changed input (double or exact soup) arranged and
   // rounded safely by a ladder of its own (without the input steps or the coarser levels),
@@ -402,54 +340,7 @@ class Ladder {
     return std::nullopt;
   }
 
-  // Nudging (round_nudged.h), when every other step failed: the corners of the conflicts
-  // that rerouting's best cycle left, moved by 1 to 1024 ulps one at a time where that
-  // leaves fewer (a grazing crossing far from any vertex, which no grid holds). In cycles,
-  // as rerouting's: where nudging stalls, its mesh is arranged again and rounded
-  // (arrange_and_round), rerouted and nudged again; each cycle adds its rounding move, an
-  // ulp per round of rerouting and its nudges to the bound.
-  Found nudge_in_cycles() {
-    if (!fewest_ || !nudgeable(fewest_violations_, fewest_->triangles.size()) || fewest_move_ >= move_limit_)
-      return std::nullopt;
-    RoundedMesh start = std::move(*fewest_);
-    double nudge_move = fewest_move_;
-    std::size_t rerouted = fewest_rerouted_, nudged_vertices = 0;
-    int cycles = fewest_cycles_;
-    const std::size_t most_triangles = start.triangles.size() + start.triangles.size() / 10;
-    auto settle_nudged = [&](RoundedMesh rounded) -> Found {
-      const RoundReport before = r_;
-      r_.rerouted = rerouted;
-      r_.reroute_cycles = cycles;
-      r_.nudged = nudged_vertices;
-      if (auto done = finish(std::move(rounded), nudge_move, 0.0)) return done;
-      r_ = before;
-      return std::nullopt;
-    };
-    const int max_passes = options_.max_passes;
-    for (int cycle = 0; cycle < kNudgeCycles && r_.passes < max_passes && nudge_move < move_limit_; ++cycle) {
-      Nudged nudged = nudge_conflicts(start, ulp_, move_limit_ - nudge_move, max_passes - r_.passes);
-      r_.passes += nudged.rounds;
-      closer(nudged.violations);
-      nudged_vertices += nudged.moved;
-      nudge_move += nudged.max_move;
-      if (nudged.violations == 0) return settle_nudged(std::move(nudged.mesh));
-      // Arranging again is a pass, and rerouting needs a round after it.
-      if (!nudgeable(nudged.violations, nudged.mesh.triangles.size()) || r_.passes + 1 >= max_passes)
-        return std::nullopt;
-      ++cycles;
-      double rounding = 0;
-      const RoundedMesh again = arrange_and_round(nudged.mesh, rounding);
-      nudge_move += rounding;
-      if (again.triangles.size() > most_triangles || nudge_move >= move_limit_) return std::nullopt;
-      Rerouted now = reroute(again, max_passes - r_.passes);
-      rerouted += now.rerouting.rerouted;
-      if (now.rerouting.rerouted > 0) nudge_move += ulp_ * now.rerouting.rounds;
-      start = std::move(now.mesh);
-      closer(now.rerouting.violations);
-      if (now.rerouting.violations == 0) return settle_nudged(std::move(start));
-    }
-    return std::nullopt;
-  }
+  Found nudge_in_cycles();  // ladder_cycles.h
 
   [[noreturn]] void refuse() {
     r_.conflicts_left = conflicts_left_;
@@ -462,7 +353,8 @@ class Ladder {
                                          .max_move_relative = options_.max_move_relative,
                                          .diagonal_ulps = diagonal_ / ulp_,
                                          .passes = r_.passes,
-                                         .max_passes = options_.max_passes}));
+                                         .max_passes = options_.max_passes,
+                                         .without = options_.without}));
   }
 
   const Mesh& mesh_;

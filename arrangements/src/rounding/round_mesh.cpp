@@ -6,6 +6,7 @@
 
 #include <limits>
 
+#include "rounding/ladder_cycles.h"
 #include "rounding/round_ladder.h"
 #include "rounding/round_to_grid.h"
 

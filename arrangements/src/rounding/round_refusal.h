@@ -8,6 +8,7 @@
 #include <string>
 
 #include "arrangements/arrange_stats.h"
+#include "arrangements/round_mesh.h"
 
 namespace arrangements {
 
@@ -21,6 +22,7 @@ struct RefusalFacts {
   double diagonal_ulps = 0;        // the exact arrangement's diagonal, in the same ulps
   int passes = 0;                  // passes and rounds spent
   int max_passes = 0;              // the caller's budget of them
+  unsigned without = 0;            // the steps left out (RoundSafeOptions::without)
 };
 
 namespace detail {
@@ -32,9 +34,18 @@ inline std::string short_number(double x) {
   return text;
 }
 
+// "; left out: rerouting, nudging" for the steps of `without` ("" for none).
+inline std::string left_out(unsigned without) {
+  std::string names;
+  for (std::size_t k = 0; k < kRoundSteps; ++k)
+    if ((without >> k) & 1u) names += (names.empty() ? "; left out: " : ", ") + std::string(kRoundStepNames[k]);
+  return names;
+}
+
 }  // namespace detail
 
 inline std::string refusal_message(const RefusalFacts& f) {
+  using detail::left_out;
   using detail::short_number;
   const std::string closest =
       f.conflicts_left > 0 ? "the closest attempt left " + std::to_string(f.conflicts_left) +
@@ -56,7 +67,7 @@ inline std::string refusal_message(const RefusalFacts& f) {
          "; move limit " + short_number(f.move_limit_ulps) + " ulps (max_move_relative " +
          short_number(f.max_move_relative) + " of the diagonal of " + short_number(f.diagonal_ulps) +
          " ulps, or 16 ulps); " + std::to_string(f.passes) + " passes and rounds in all (at most " +
-         std::to_string(f.max_passes) + ")";
+         std::to_string(f.max_passes) + ")" + left_out(f.without);
 }
 
 }  // namespace arrangements

@@ -1,0 +1,88 @@
+// RoundSafeOptions::without (arrange --round-without), the switch behind the study of what
+// each step of round_safe's ladder settles that no other does (docs/ROUNDING.md): leaving
+// out the step that settles a mesh makes round_safe refuse it, with the left-out steps
+// named in the message, or settle it by a later step that the report shows; leaving out
+// steps the ladder never reaches changes nothing, byte for byte. The meshes are the
+// rotated copies of test_round_safe.cpp whose settling step is known.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+#include "arrangements/arrange.h"
+#include "arrangements/round_mesh.h"
+#include "support/mesh_generators.h"
+
+namespace {
+
+using namespace arrangements;
+
+unsigned bit(RoundStep step) { return 1u << static_cast<unsigned>(step); }
+
+// round_safe of `exact` with `without`; the message of its RoundingError, "" when it settles.
+std::string rounding_refusal(const OutputMesh& exact, const TriangleSoup& input, unsigned without, RoundedMesh& out,
+                             RoundReport& report) {
+  try {
+    out = round_safe(exact, RoundSafeOptions{.input = &input, .without = without}, &report);
+    return "";
+  } catch (const RoundingError& e) {
+    return e.what();
+  }
+}
+
+TEST(RoundSafeWithout, EveryStepHasOneDistinctName) {
+  for (std::size_t i = 0; i < kRoundSteps; ++i) {
+    EXPECT_FALSE(kRoundStepNames[i].empty());
+    for (std::size_t j = 0; j < i; ++j) EXPECT_NE(kRoundStepNames[i], kRoundStepNames[j]);
+  }
+  EXPECT_EQ(kRoundStepNames[static_cast<std::size_t>(RoundStep::nudging)], "nudging");
+}
+
+TEST(RoundSafeWithout, LeavingOutNudgingRefusesWhatOnlyNudgingSettles) {
+  // Three copies of a 10 x 21 sphere turned about one axis: only nudging settles them
+  // (test_round_safe.cpp, GrazingLayersOfThreeCopiesWith21MeridiansSettleByNudging).
+  const TriangleSoup soup = rotated_copies(uv_sphere({0, 0, 0}, 1.0, 10, 21), 3);
+  const ArrangeResult first = arrange(soup, ArrangeOptions{});
+  RoundedMesh all, without;
+  RoundReport all_report, without_report;
+  ASSERT_EQ(rounding_refusal(first.mesh, soup, 0, all, all_report), "");
+  ASSERT_GT(all_report.nudged, 0u);
+  const std::string refusal = rounding_refusal(first.mesh, soup, bit(RoundStep::nudging), without, without_report);
+  EXPECT_NE(refusal.find("; left out: nudging"), std::string::npos) << refusal;
+  EXPECT_EQ(without_report.nudged, 0u);
+  EXPECT_GT(without_report.conflicts_left, 0u);
+  std::printf("10 x 21 copies without nudging: %d passes, then refused with %zu conflicts left\n",
+              without_report.passes, without_report.conflicts_left);
+}
+
+TEST(RoundSafeWithout, StepsNotReachedChangeNothing) {
+  // Two copies of a 10 x 19 sphere turned by pi: rerouting's cycles settle them, so the
+  // steps after rerouting are never reached, and leaving them out gives the same mesh.
+  const TriangleSoup soup = rotated_copies(uv_sphere({0, 0, 0}, 1.0, 10, 19), 2);
+  const ArrangeResult first = arrange(soup, ArrangeOptions{});
+  RoundedMesh all, without;
+  RoundReport all_report, without_report;
+  ASSERT_EQ(rounding_refusal(first.mesh, soup, 0, all, all_report), "");
+  ASSERT_GT(all_report.rerouted, 0u);
+  ASSERT_EQ(all_report.nudged, 0u);
+  const unsigned later = bit(RoundStep::merged_input) | bit(RoundStep::snapped_layers) |
+                         bit(RoundStep::snapped_contacts) | bit(RoundStep::level_1) | bit(RoundStep::per_vertex) |
+                         bit(RoundStep::coarse_levels) | bit(RoundStep::nudging);
+  ASSERT_EQ(rounding_refusal(first.mesh, soup, later, without, without_report), "");
+  EXPECT_EQ(without.vertices, all.vertices);
+  EXPECT_EQ(without.triangles, all.triangles);
+  EXPECT_EQ(without.source, all.source);
+  EXPECT_EQ(without_report.passes, all_report.passes);
+  EXPECT_EQ(without_report.max_move, all_report.max_move);
+  // Without rerouting (and so nudging), a later step settles it with no vertex rerouted,
+  // or nothing does and the refusal names both.
+  const std::string refusal = rounding_refusal(first.mesh, soup, bit(RoundStep::rerouting), without, without_report);
+  EXPECT_EQ(without_report.rerouted, 0u);
+  EXPECT_EQ(without_report.nudged, 0u);
+  if (!refusal.empty()) EXPECT_NE(refusal.find("; left out: rerouting"), std::string::npos) << refusal;
+  else EXPECT_NE(without.vertices, all.vertices);
+  std::printf("10 x 19 turned by pi without rerouting: %s after %d passes\n", refusal.empty() ? "settled" : "refused",
+              without_report.passes);
+}
+
+}  // namespace
