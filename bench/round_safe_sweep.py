@@ -215,12 +215,15 @@ def count_faces(obj):
         return None
 
 
-def run_arrange(binary, file, out, threads, timeout, max_move=None):
-    """(status, exit code, message, stats or None, wall seconds) of one arrange process."""
+def run_arrange(binary, file, out, threads, timeout, max_move=None, without=None):
+    """(status, exit code, message, stats or None, wall seconds) of one arrange process; `without`:
+    the --round-without steps (comma-separated), if any."""
     cmd = ["sh", "-c", '"$@"; exit $?', "sh", str(binary), str(file), "-o", str(out), "--round", "safe",
            "--stats", "--threads", str(threads)]
     if max_move is not None:
         cmd += ["--round-max-move", repr(max_move)]
+    if without:
+        cmd += ["--round-without", without]
     start = time.monotonic()
     try:
         p = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,

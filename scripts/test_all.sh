@@ -76,7 +76,7 @@ VENV=$ROOT/build-python/venv
   tests/python/test_script_args.py tests/python/test_compare_upstream.py \
   tests/python/test_round_safe_sweep.py tests/python/test_coplanar_bench.py \
   tests/python/test_boolean_bench.py tests/python/test_boolean_real_sets.py tests/python/test_round_bench.py \
-  tests/python/test_subnormal_bench.py
+  tests/python/test_subnormal_bench.py tests/python/test_round_steps_study.py
 stage "docs examples (README.md, docs/*.md) against the install of stage 3"
 CI=${CI:-1} TRITRI_PREFIX="$prefix/install" JOBS=$JOBS \
   "$VENV/bin/python" -m pytest -q -p no:cacheprovider tests/python/test_docs_examples.py
