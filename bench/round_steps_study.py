@@ -11,8 +11,9 @@ the ladder's steps ran) is run again once per step, with `--round-without STEP`
 (docs/ROUNDING.md lists the steps), at 1 thread (the sweep's default), --jobs at once. Leaving out a step that the
 run never reached, or that failed on it, gives the same result; a run where the step settled
 comes out different: settled by a later step (another step settles it too) or not at all
-(refused, timed out: only this step settles it). "Same" compares round_passes,
-round_max_move_rel and rounded_triangles.
+(refused, timed out: only this step settles it). "Same" compares the output:
+round_max_move_rel and rounded_triangles (a step that was tried and failed still spent
+passes, so round_passes may differ where the output does not).
 
 Output: --out gets one JSON object per run (step, mesh, variant, file, status, the sweep's and
 this run's wall_s, round_passes, round_max_move_rel, rounded_triangles, same), written as they
@@ -49,7 +50,7 @@ def round_steps():
 
 
 STEPS = round_steps()
-COMPARED = ("round_passes", "round_max_move_rel", "rounded_triangles")
+COMPARED = ("round_max_move_rel", "rounded_triangles")
 
 
 def step_list(value):
@@ -104,7 +105,7 @@ def study_run(args, step, sweep_row, scratch):
         leftover.unlink(missing_ok=True)
     rec = {"step": step, "mesh": sweep_row["mesh"], "variant": sweep_row["variant"], "file": sweep_row["file"],
            "status": status, "message": message, "sweep_wall_s": sweep_row["wall_s"], "wall_s": round(wall, 6)}
-    rec.update({k: (stats or {}).get(k) for k in COMPARED})
+    rec.update({k: (stats or {}).get(k) for k in ("round_passes",) + COMPARED})
     rec["same"] = status == "settled" and all(rec[k] == sweep_row.get(k) for k in COMPARED)
     return rec
 

@@ -198,7 +198,7 @@ bool expect_shifted_copy_settled(const TriangleSoup& soup, const std::string& na
 }
 
 TEST(RoundSafeInput, ShiftedCopiesOfSpheresSettle) {
-  // Refused before coarse merges: no grid up to 2^32 ulps holds the crossings.
+  // No grid up to 2^32 ulps holds the crossings (levels that coarse were tried once).
   const Vec3 axis{0.3 / std::sqrt(0.98), 0.5 / std::sqrt(0.98), 0.8 / std::sqrt(0.98)}, direction{0.6, 0.0, 0.8};
   std::vector<std::pair<int, int>> sizes = {{20, 40}, {30, 60}};
   if (tritri_test::scaled_down()) sizes.pop_back();  // the sanitizer build: minutes each

@@ -30,6 +30,19 @@ std::string rounding_refusal(const OutputMesh& exact, const TriangleSoup& input,
   }
 }
 
+// The soup's arrangement, rounded with every step (refusal "" when it settles).
+struct WithAllSteps {
+  ArrangeResult first;
+  RoundedMesh mesh;
+  RoundReport report;
+  std::string refusal;
+};
+WithAllSteps round_with_all_steps(const TriangleSoup& soup) {
+  WithAllSteps all{arrange(soup, ArrangeOptions{}), {}, {}, {}};
+  all.refusal = rounding_refusal(all.first.mesh, soup, 0, all.mesh, all.report);
+  return all;
+}
+
 TEST(RoundSafeWithout, EveryStepHasOneDistinctName) {
   for (std::size_t i = 0; i < kRoundSteps; ++i) {
     EXPECT_FALSE(kRoundStepNames[i].empty());
@@ -42,12 +55,13 @@ TEST(RoundSafeWithout, LeavingOutNudgingRefusesWhatOnlyNudgingSettles) {
   // Three copies of a 10 x 21 sphere turned about one axis: only nudging settles them
   // (test_round_safe.cpp, GrazingLayersOfThreeCopiesWith21MeridiansSettleByNudging).
   const TriangleSoup soup = rotated_copies(uv_sphere({0, 0, 0}, 1.0, 10, 21), 3);
-  const ArrangeResult first = arrange(soup, ArrangeOptions{});
-  RoundedMesh all, without;
-  RoundReport all_report, without_report;
-  ASSERT_EQ(rounding_refusal(first.mesh, soup, 0, all, all_report), "");
-  ASSERT_GT(all_report.nudged, 0u);
-  const std::string refusal = rounding_refusal(first.mesh, soup, bit(RoundStep::nudging), without, without_report);
+  const WithAllSteps all = round_with_all_steps(soup);
+  ASSERT_EQ(all.refusal, "");
+  ASSERT_GT(all.report.nudged, 0u);
+  RoundedMesh without;
+  RoundReport without_report;
+  const std::string refusal =
+      rounding_refusal(all.first.mesh, soup, bit(RoundStep::nudging), without, without_report);
   EXPECT_NE(refusal.find("; left out: nudging"), std::string::npos) << refusal;
   EXPECT_EQ(without_report.nudged, 0u);
   EXPECT_GT(without_report.conflicts_left, 0u);
@@ -59,28 +73,29 @@ TEST(RoundSafeWithout, StepsNotReachedChangeNothing) {
   // Two copies of a 10 x 19 sphere turned by pi: rerouting's cycles settle them, so the
   // steps after rerouting are never reached, and leaving them out gives the same mesh.
   const TriangleSoup soup = rotated_copies(uv_sphere({0, 0, 0}, 1.0, 10, 19), 2);
-  const ArrangeResult first = arrange(soup, ArrangeOptions{});
-  RoundedMesh all, without;
-  RoundReport all_report, without_report;
-  ASSERT_EQ(rounding_refusal(first.mesh, soup, 0, all, all_report), "");
-  ASSERT_GT(all_report.rerouted, 0u);
-  ASSERT_EQ(all_report.nudged, 0u);
+  const WithAllSteps all = round_with_all_steps(soup);
+  ASSERT_EQ(all.refusal, "");
+  ASSERT_GT(all.report.rerouted, 0u);
+  ASSERT_EQ(all.report.nudged, 0u);
+  RoundedMesh without;
+  RoundReport without_report;
   const unsigned later = bit(RoundStep::merged_input) | bit(RoundStep::snapped_layers) |
                          bit(RoundStep::snapped_contacts) | bit(RoundStep::level_1) | bit(RoundStep::per_vertex) |
-                         bit(RoundStep::coarse_levels) | bit(RoundStep::nudging);
-  ASSERT_EQ(rounding_refusal(first.mesh, soup, later, without, without_report), "");
-  EXPECT_EQ(without.vertices, all.vertices);
-  EXPECT_EQ(without.triangles, all.triangles);
-  EXPECT_EQ(without.source, all.source);
-  EXPECT_EQ(without_report.passes, all_report.passes);
-  EXPECT_EQ(without_report.max_move, all_report.max_move);
+                         bit(RoundStep::nudging);
+  ASSERT_EQ(rounding_refusal(all.first.mesh, soup, later, without, without_report), "");
+  EXPECT_EQ(without.vertices, all.mesh.vertices);
+  EXPECT_EQ(without.triangles, all.mesh.triangles);
+  EXPECT_EQ(without.source, all.mesh.source);
+  EXPECT_EQ(without_report.passes, all.report.passes);
+  EXPECT_EQ(without_report.max_move, all.report.max_move);
   // Without rerouting (and so nudging), a later step settles it with no vertex rerouted,
   // or nothing does and the refusal names both.
-  const std::string refusal = rounding_refusal(first.mesh, soup, bit(RoundStep::rerouting), without, without_report);
+  const std::string refusal =
+      rounding_refusal(all.first.mesh, soup, bit(RoundStep::rerouting), without, without_report);
   EXPECT_EQ(without_report.rerouted, 0u);
   EXPECT_EQ(without_report.nudged, 0u);
   if (!refusal.empty()) EXPECT_NE(refusal.find("; left out: rerouting"), std::string::npos) << refusal;
-  else EXPECT_NE(without.vertices, all.vertices);
+  else EXPECT_NE(without.vertices, all.mesh.vertices);
   std::printf("10 x 19 turned by pi without rerouting: %s after %d passes\n", refusal.empty() ? "settled" : "refused",
               without_report.passes);
 }

@@ -73,8 +73,8 @@ options:
                           again, nearly coplanar faces snapped onto one plane, then
                           corners within a few ulps of a face they touch too, then
                           a grid of 2^8 ulps, then every vertex rounded on its own, to
-                          coarser grids only at the conflicts, then coarser grids (each
-                          after merging input vertices within its spacing); no vertex
+                          coarser grids only at the conflicts, then vertices of the
+                          conflicts nudged by ulps (in cycles); no vertex
                           moves by more than a 64th of the model's diagonal (see
                           --round-max-move); provenance kept; exit status 4 if nothing
                           settles within 384 passes. Stats round_*

@@ -55,7 +55,7 @@ def sweep_row(tmp_path):
     assert status == "settled", message
     assert stats["round_passes"] > 1 and stats["round_rerouted"] > 0 and stats["round_nudged"] == 0, stats
     row = {"mesh": "spheres.off", "variant": "rot2", "file": str(off), "status": "settled", "wall_s": wall}
-    row.update({k: stats[k] for k in round_steps_study.COMPARED})
+    row.update({k: stats[k] for k in ("round_passes",) + round_steps_study.COMPARED})
     sweep = tmp_path / "sweep.jsonl"
     sweep.write_text(json.dumps(row) + "\n")
     return sweep

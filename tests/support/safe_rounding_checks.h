@@ -131,7 +131,7 @@ RoundReport expect_safe_rounding(const Mesh& exact, const std::string& name, boo
   }
   for (const auto& [source, area] : ar)
     EXPECT_TRUE(ae.count(source)) << name << ": source " << source << " is new";
-  // The coarsest level's grid is 2^32 ulps of the largest magnitude (about 5e-7 of it).
+  // Rounding per vertex's coarsest grid is 2^32 ulps of the largest magnitude (about 5e-7 of it).
   EXPECT_LE(report.max_move_relative, 1e-6) << name;
   EXPECT_EQ(report.max_move == 0, report.max_move_relative == 0) << name;
 

@@ -31,12 +31,13 @@
 //   two surfaces 1e-33 apart near a zero coordinate); passes at level 0 then keep making
 //   new points at that scale. When a pass does not reduce the violating pairs, grows the
 //   mesh by more than a tenth, or 4 passes did not succeed, rerouting is tried (below: it
-//   moves the surface by an ulp per round at most), then merging input vertices (below), then the
-//   next level starts again
-//   from the exact arrangement, on the uniform grid of spacing h = 2^(8j) ulps of L
-//   (level j = 1..4; snap distance h): unlike the doubles, the grid is as coarse near
+//   moves the surface by an ulp per round at most), then merging input vertices (below), then
+//   level 1 starts again from the exact arrangement, on the uniform grid of spacing
+//   h = 2^8 ulps of L (snap distance h): unlike the doubles, the grid is as coarse near
 //   zero as anywhere, so features thinner than a cell collapse instead of crossing again.
-//   Input vertices move too at levels >= 1 (onto the grid).
+//   Input vertices move too at level 1 (onto the grid). Levels 2-4 (grids of 2^16 to 2^32
+//   ulps, each after merging input vertices at its spacing) came next until a study
+//   (docs/ROUNDING.md) found that they settled nothing the other steps do not: gone.
 //   Displacement: the points of a pass move by at most the snap distance or the rounding
 //   from a point of the previous pass's surface; report->max_move sums the largest move
 //   of each pass of the successful level (bounded from exact coordinate differences), so
@@ -69,8 +70,8 @@
 //   bound. Layers crossing at grazing angles with few conflicts settle this way (three
 //   copies of a 10 x 19 sphere rotated about its box centre: 7 cycles, 1.3e-15 of the
 //   diagonal).
-//   Rounding per vertex (src/rounding/round_per_vertex.h), when level 1 fails too (before levels
-//   2-4: it moves only the vertices of conflicting triangles), from the
+//   Rounding per vertex (src/rounding/round_per_vertex.h), when level 1 fails too (it moves
+//   only the vertices of conflicting triangles), from the
 //   arrangement's triangles, then from the rerouted ones. Every vertex of the exact
 //   arrangement goes to the nearest double; each round checks the rounded mesh exactly
 //   (check_arrangement) and moves the vertices of every violating pair, and only those,
@@ -82,8 +83,8 @@
 //   odd number of meridians, which rerouting's cycles now settle first; tested on its
 //   own): there it settles with a few vertices a few ulps off.
 //   Merging input vertices (src/rounding/round_merged_input.h), when rerouting fails and
-//   options.input is given, before the coarser levels (it moves vertices by a few ulps,
-//   they by 2^8 ulps or more): input vertices within 4 ulps of L of each other are merged
+//   options.input is given, before level 1 (it moves vertices by a few ulps, level 1 by
+//   2^8 ulps): input vertices within 4 ulps of L of each other are merged
 //   (transitively; then 16, 64, 256 ulps while it does not settle, skipping a distance
 //   that merges no more), the merged input is arranged again and rounded safely as here
 //   (without this step). Copies of one mesh
@@ -102,16 +103,8 @@
 //   largest snap. Then the same with contacts (4, 16, 64 ulps): a corner within that
 //   distance of the plane of a triangle it touches moves onto it (an edge that lay on a
 //   face, 1e-17 off it once turned, which cuts slivers 1e-17 wide along the whole edge).
-//   Merging input vertices at coarser distances, before each coarser level j = 2..4:
-//   within 2^(8j-6) .. 2^(8j) ulps (4^k ulps, k = 4j-3 .. 4j), a distance tried only
-//   where 4 times it would merge at most a 16th more vertices (a scale between clusters:
-//   every copied vertex caught, not some). A copy moved by 1e-9 of the size and turned by
-//   1e-7 rad crosses its original at grazing angles everywhere, and no grid holds those
-//   crossings; merged within about 1e-7 of the size (2^28 to 2^32 ulps), it coincides with
-//   its original, a smaller change than moving every vertex to that level's grid. Each
-//   changed input (every input step) gets 32 passes and 64 for nudging's cycles on top,
-//   rerouting at most 64 in all, and stops after level 1 (the coarser levels move every
-//   vertex far more than the change; this ladder tries them itself).
+//   Each changed input (every input step) gets 32 passes and 64 for nudging's cycles on
+//   top, rerouting at most 64 in all.
 //   Nudging (src/rounding/round_nudged.h), the last step (also of each changed input's ladder):
 //   from rerouting's cycle with the fewest conflicts (at most 1024, or on up to a 20th of
 //   the triangles: as for arranging again in the cycles), the corners of
@@ -127,7 +120,7 @@
 //   ulps wide settle this way (a turned copy of manifold's openscad-nonmanifold-crash:
 //   785 conflicts, nudged to 149, then 8, 6, 4 and none in 4 cycles, 2.1e-13 of the diagonal).
 //   Termination: the passes have no proof (3D snap rounding with a proven bound needs a
-//   grid far coarser than doubles): at most kLevels x 4 = 20 of them. Rerouting stops
+//   grid far coarser than doubles): at most kLevels x 4 = 8 of them. Rerouting stops
 //   after 3 rounds without fewer violations, its cycles after 8 (or sooner, above).
 //   Rounding per vertex terminates by construction (each failed round raises a bounded
 //   level of some vertex) and gives up
@@ -186,14 +179,13 @@ enum class RoundStep : unsigned {
   snapped_contacts,         // snapping corners onto the plane of a face they touch
   level_1,                  // the passes on the grid of 2^8 ulps
   per_vertex,               // rounding per vertex
-  coarse_levels,            // levels 2 to 4, each after merging the input at its scale
   nudging,                  // nudging and its cycles
 };
-inline constexpr std::size_t kRoundSteps = 9;
+inline constexpr std::size_t kRoundSteps = 8;
 // Their names, indexed by RoundStep (as `arrange --round-without` takes them).
 inline constexpr std::array<std::string_view, kRoundSteps> kRoundStepNames = {
-    "merged-nearest", "rerouting",  "merged-input",  "snapped-layers", "snapped-contacts",
-    "level-1",        "per-vertex", "coarse-levels", "nudging"};
+    "merged-nearest", "rerouting", "merged-input", "snapped-layers",
+    "snapped-contacts", "level-1", "per-vertex", "nudging"};
 
 struct RoundSafeOptions {
   int max_passes = 384;  // passes of rounding and arranging, then rounds of the last resorts

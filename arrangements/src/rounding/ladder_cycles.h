@@ -1,5 +1,5 @@
 // The cycles of round_safe's ladder (Ladder, round_ladder.h): rerouting's (step 3) and
-// nudging's (step 9). Both alternate a last resort that makes no new points with arranging
+// nudging's (step 8). Both alternate a last resort that makes no new points with arranging
 // again, where the crossings its rounding left become points; their results keep the
 // ladder's invariant through Ladder::finish. Included by whoever runs a Ladder.
 #pragma once

@@ -8,12 +8,13 @@
 
 namespace arrangements::detail {
 
-// Rounding levels: level 0 rounds to the nearest double; level j >= 1 to the uniform grid of
-// spacing 2^(8j) units in the last place of the largest coordinate magnitude. A uniform grid,
+// Rounding levels: level 0 rounds to the nearest double; level 1 to the uniform grid of
+// spacing 2^8 units in the last place of the largest coordinate magnitude. A uniform grid,
 // unlike the doubles, is as coarse near zero as anywhere: features thinner than a cell (a
 // sliver, two surfaces 1e-33 apart near a zero coordinate) collapse instead of crossing
-// again after every pass.
-constexpr int kLevels = 5;
+// again after every pass. (Levels 2-4, grids of 2^16 to 2^32 ulps, settled nothing that
+// the other steps do not: docs/ROUNDING.md.)
+constexpr int kLevels = 2;
 constexpr int kPassesPerLevel = 4;
 constexpr int kRerouteCycles = 8;
 // Rerouting's cycles stop at one that leaves no fewer conflicts than the best before it
@@ -24,7 +25,6 @@ constexpr int kReroutePasses = 64;  // passes and rounds of round_safe when its 
 constexpr int kInputBudget = 32;  // passes and rounds of round_safe on each changed input
 constexpr int kNudgeRounds = 64;  // kept for nudging (in cycles) on each changed input, beyond its kInputBudget
 constexpr int kNudgeCycles = 8;   // nudgings, each after the last one's mesh was arranged again
-constexpr int kChangedInputLevels = 2;  // a changed input's ladder: levels 0 and 1 (see Ladder)
 
 // Conflicts few enough to arrange again (rerouting's and nudging's cycles): on at most a
 // 20th of the triangles. Where they are more (layers that nearly coincide over whole

@@ -31,13 +31,11 @@
 //   7. Per vertex (round_per_vertex.h, round_each_vertex): only the vertices of violating
 //      pairs move, to coarser grids of their own, from the arrangement's triangles, then
 //      from the first rerouting's.
-//   8. Levels 2 to 4: each after merging the input within its spacing (`stable`
-//      distances only), the passes of 1 on grids of 2^(8j) ulps.
-//   9. Nudging (round_nudged.h; nudge_in_cycles, ladder_cycles.h), the last step: the corners of the
+//   8. Nudging (round_nudged.h; nudge_in_cycles, ladder_cycles.h), the last step: the corners of the
 //      conflicts that rerouting's best cycle left move by 1 to 1024 ulps one at a time
 //      where that leaves fewer; in cycles of arranging again and rerouting.
 // Every step counts its passes against options.max_passes (less the nudging reserve). A
-// study leaves steps 2-9 out by options.without (RoundStep), in every ladder it starts.
+// study leaves steps 2-8 out by options.without (RoundStep), in every ladder it starts.
 #pragma once
 
 #include <algorithm>
@@ -80,9 +78,8 @@ namespace arrangements::detail {
 // limit: its result would be refused (this is what makes a refusal cheap).
 // nudge_reserve: the last passes of options.max_passes kept for nudging, the last step (a
 // changed input's ladder gets its passes and these on top); below options.max_passes.
-// levels: the grid levels tried (kLevels; a changed input's ladder stops after level 1:
-// the coarser ones move every vertex by 2^16 ulps or more, far more than the change, and
-// the ladder above tries them itself, each after merging the input at its scale).
+// levels: the grid levels tried (kLevels: level 0, the nearest doubles, and level 1;
+// merged_input_at_nearest's one pass: level 0 only).
 template <class Mesh>
 class Ladder {
  public:
@@ -115,41 +112,33 @@ class Ladder {
     // The steps in the order of the list at the top of this file: the smallest change first.
     if (uses(RoundStep::merged_input_at_nearest))
       if (auto done = merged_input_at_nearest()) return *done;
-    // Rerouting moves the surface by an ulp per round only, so it comes before the coarser
-    // levels and the input changes.
+    // Rerouting moves the surface by an ulp per round only, so it comes before level 1 and
+    // the input changes.
     exact_and_nearest(mesh_, exact_, nearest_positions_);
     if (uses(RoundStep::rerouting))
       if (auto done = reroute_in_cycles()) return *done;
     // Merged input within 4, 16, 64, then 256 ulps (before the grids' 2^8 ulps or more).
     if (uses(RoundStep::merged_input))
-      if (auto done = input_step(1, 4, false, merged_before, &Ladder::merge_within, &MergedInput::merged,
+      if (auto done = input_step(1, 4, merged_before, &Ladder::merge_within, &MergedInput::merged,
                                  &RoundReport::merged_input))
         return *done;
     // Snapped planes: near-coplanar layers, then corners near a face they touch (an edge on
     // a face that a turn left 1e-17 off it), within 4, 16, then 64 ulps.
     if (uses(RoundStep::snapped_layers))
-      if (auto done = input_step(1, 3, false, snapped_before, &Ladder::snap_layers_within, &SnappedPlanes::moved,
+      if (auto done = input_step(1, 3, snapped_before, &Ladder::snap_layers_within, &SnappedPlanes::moved,
                                  &RoundReport::snapped_vertices))
         return *done;
     if (uses(RoundStep::snapped_contacts))
-      if (auto done = input_step(1, 3, false, snapped_before, &Ladder::snap_contacts_within,
+      if (auto done = input_step(1, 3, snapped_before, &Ladder::snap_contacts_within,
                                  &SnappedPlanes::moved, &RoundReport::snapped_vertices))
         return *done;
-    // Level 1, then rounding per vertex (only the vertices of conflicts move: a far smaller
-    // change, where it settles, than the levels below).
+    // Level 1, then rounding per vertex (only the vertices of conflicts move). The coarser
+    // levels 2-4 that came next (each after merging the input at its spacing) settled
+    // nothing in the sweep or the tests that these steps do not (docs/ROUNDING.md): gone.
     if (uses(RoundStep::level_1) && r_.passes < budget_ && levels_ > 1)
       if (auto done = passes_at_level(1)) return *done;
     if (uses(RoundStep::per_vertex))
       if (auto done = round_each_vertex()) return *done;
-    // The coarser levels, each after merging the input within its spacing (copies moved by
-    // 1e-9 of the size and turned by 1e-7 rad coincide, a smaller change than the grid);
-    // merges that catch only some copies leave layers crossing, so only `stable` distances.
-    for (int level = 2; uses(RoundStep::coarse_levels) && level < levels_ && r_.passes < budget_; ++level) {
-      if (auto done = input_step(4 * level - 3, 4 * level, true, merged_before, &Ladder::merge_within,
-                                 &MergedInput::merged, &RoundReport::merged_input))
-        return *done;
-      if (auto done = passes_at_level(level)) return *done;
-    }
     if (uses(RoundStep::nudging))
       if (auto done = nudge_in_cycles()) return *done;
     refuse();
@@ -225,13 +214,13 @@ class Ladder {
   Found reroute_in_cycles();
 
   // Back to the input, when given: a changed input (double or exact soup) arranged and
-  // rounded safely by a ladder of its own (without the input steps or the coarser levels),
+  // rounded safely by a ladder of its own (without the input steps),
   // within kInputBudget passes (a change that does not settle soon is not the right one);
   // `note` records the change in the report. The bound adds the input's largest move.
   // passes, nudge_rounds, levels: the changed input's ladder (merged_input_at_nearest's: 1, 0, 1).
   template <class Soup, class Note>
   Found settle_input(const Soup& soup, double input_move, Note note, int passes = kInputBudget,
-                     int nudge_rounds = kNudgeRounds, int levels = kChangedInputLevels) {
+                     int nudge_rounds = kNudgeRounds, int levels = kLevels) {
     if (input_move > move_limit_) return std::nullopt;
     RoundSafeOptions inner = options_;
     inner.input = nullptr;
@@ -270,22 +259,14 @@ class Ladder {
 
   // One input step: the input changed within 4^k ulps for k = first..last (`change`, whose
   // result counts the vertices it moved in `count`) and settled as above. A distance that
-  // moves no more vertices than the last one tried (`moved_before`) is not tried again;
-  // with `stable`, neither is one where 4 times the distance would move more than a 16th
-  // more vertices (a scale inside the clusters, not between them: copies not all caught).
+  // moves no more vertices than the last one tried (`moved_before`) is not tried again.
   template <class Changed>
-  Found input_step(int first, int last, bool stable, std::size_t& moved_before, Changed (Ladder::*change)(double) const,
+  Found input_step(int first, int last, std::size_t& moved_before, Changed (Ladder::*change)(double) const,
                    std::size_t Changed::*count, std::size_t RoundReport::*reported) {
     if (options_.input == nullptr) return std::nullopt;
-    std::optional<Changed> ahead;  // the change at 4 times the distance, when made
     for (int k = first; k <= last && r_.passes < budget_; ++k) {
-      const Changed changed = ahead ? std::move(*ahead) : (this->*change)(std::ldexp(ulp_, 2 * k));
-      ahead.reset();
+      const Changed changed = (this->*change)(std::ldexp(ulp_, 2 * k));
       if (changed.*count == moved_before) continue;
-      if (stable) {
-        ahead = (this->*change)(std::ldexp(ulp_, 2 * k + 2));
-        if ((*ahead).*count > changed.*count + changed.*count / 16) continue;
-      }
       moved_before = changed.*count;
       auto note = [&](RoundReport& d) { d.*reported = changed.*count; };
       if (auto done = settle_input(changed.soup, changed.max_move, note)) return done;
