@@ -21,7 +21,7 @@ settle, that binary and thread count is not run again on the workload.
 
 Kept per (workload, binary, T): the settled run of least wall time, its peak memory and, from
 its --stats: t_total_s, round_passes, round_max_move_rel, round_rerouted, round_merged_input,
-round_snapped_vertices, round_coarsened, round_nudged and out_triangles (with --round safe the
+round_snapped_vertices, round_nudged and out_triangles (with --round safe the
 triangles of the written, rounded mesh). The rounded triangle count must be the same in every
 run of one binary and thread count; a difference is flagged on stderr and below the table.
 The two binaries may round differently (a faster algorithm may): both counts are shown.
@@ -64,7 +64,7 @@ CGAL_SNAP_ROUNDING_S = {
 CGAL_GRIDS = ("2^50", "2^23")
 CGAL_TIMEOUT_S = 600
 KEPT = ("in_triangles", "t_total_s", "peak_rss_mb", "round_passes", "round_max_move_rel", "round_rerouted",
-        "round_merged_input", "round_snapped_vertices", "round_coarsened", "round_nudged", "out_triangles")
+        "round_merged_input", "round_snapped_vertices", "round_nudged", "out_triangles")
 
 
 # ---------------------------------------------------------------------------------------------

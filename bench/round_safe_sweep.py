@@ -36,14 +36,14 @@ timeout, error (any other exit, exit 0 without JSON, or an unreadable mesh).
 Output: --out gets one JSON object per run: mesh (id: path relative to its folder or
 manifest), variant, file (the variant OFF), in_triangles (of the variant), status,
 exit_code, message (the first stderr line when not settled), wall_s (the process), and
-round_passes, round_max_move_rel, round_rerouted, round_coarsened, round_merged_input,
+round_passes, round_max_move_rel, round_rerouted, round_merged_input,
 round_snapped_vertices, round_nudged, out_triangles (of the exact arrangement), t_total_s, peak_rss_mb (null when
 arrange printed no --stats), and rounded_triangles (faces of the written mesh; null unless settled). Rows go to
 RESULTS.jsonl.partial as runs finish (flushed), renamed to RESULTS.jsonl when the sweep is
 done; an interrupted sweep leaves the .partial file. Progress on stderr. On stdout, a
 Markdown summary per variant: counts per status; median and max of round_passes,
 round_max_move_rel and t_total_s over settled runs; how many settled runs needed rerouting,
-merged input vertices, snapped nearly coplanar faces or coarser grids; max peak MB; then the
+merged input vertices, snapped nearly coplanar faces or nudged vertices; max peak MB; then the
 refused, timed-out and failed runs.
 """
 import argparse
@@ -70,7 +70,7 @@ DEFAULT_MANIFEST = REPO.parent / "shared" / "meshes" / "manifest.csv"
 MESH_SUFFIXES = (".obj", ".off", ".stl", ".ply")
 VARIANTS = ("rot2", "rot3", "shift", "scaled")
 STATUSES = ("settled", "refused", "timeout", "error")
-STAT_KEYS = ("round_passes", "round_max_move_rel", "round_rerouted", "round_coarsened", "round_merged_input",
+STAT_KEYS = ("round_passes", "round_max_move_rel", "round_rerouted", "round_merged_input",
              "round_snapped_vertices", "round_nudged", "out_triangles", "t_total_s", "peak_rss_mb", "rounded_triangles")
 REFUSED_EXIT = 4
 SCALE, OFFSET = 2.0 ** -30, 1e6
@@ -314,21 +314,20 @@ def summary(rows, args, meshes):
              + f"; {args.arrange}", "",
              "| variant | runs | settled | refused | timeout | error | passes median | passes max "
              "| max move rel median | max move rel max | total s median | total s max | rerouted | merged input "
-             "| snapped | coarsened | nudged | peak MB max |", "|---|" + "---:|" * 17]
+             "| snapped | nudged | peak MB max |", "|---|" + "---:|" * 16]
     for variant in args.variants:
         runs = [r for r in rows if r["variant"] == variant]
         ok = [r for r in runs if r["status"] == "settled"]
         counts = [str(sum(r["status"] == s for r in runs)) for s in STATUSES]
         used = [str(sum((r[k] or 0) > 0 for r in ok))
-                for k in ("round_rerouted", "round_merged_input", "round_snapped_vertices", "round_coarsened",
-                          "round_nudged")]
+                for k in ("round_rerouted", "round_merged_input", "round_snapped_vertices", "round_nudged")]
         peak = [r["peak_rss_mb"] for r in ok if r["peak_rss_mb"] is not None]
         cells = [variant, str(len(runs)), *counts, *fmt([r["round_passes"] for r in ok], "g"),
                  *fmt([r["round_max_move_rel"] for r in ok], ".2e"), *fmt([r["t_total_s"] for r in ok], ".3f"),
                  *used, f"{max(peak):.0f}" if peak else "–"]
         lines.append("| " + " | ".join(cells) + " |")
-    lines.append("\nrerouted / merged input / snapped / coarsened / nudged: settled runs whose last resort "
-                 "rerouted vertices, merged input vertices, snapped nearly coplanar faces, used coarser grids "
+    lines.append("\nrerouted / merged input / snapped / nudged: settled runs whose last resort "
+                 "rerouted vertices, merged input vertices, snapped nearly coplanar faces "
                  "or nudged vertices "
                  "(round_* > 0). Messages are cut; --out has them whole.")
     for status, title in (("refused", "Refused"), ("timeout", "Timed out"), ("error", "Errors")):

@@ -35,7 +35,6 @@
 #include "arrangements/round_mesh.h"
 #include "rounding/arrange_locally.h"
 #include "rounding/mesh_on_positions.h"
-#include "rounding/round_per_vertex.h"
 #include "rounding/round_to_grid.h"
 #include "support/bounding_box.h"
 #include "support/exact_soups.h"
@@ -59,7 +58,7 @@ TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
   const double scale = tritri_test::test_scale();
   const std::size_t every = scale < 1 ? static_cast<std::size_t>(std::lround(1 / scale)) : 1;
   std::size_t index = 0;
-  int rounded = 0, more_than_one_pass = 0, coarser_grid = 0, last_resort = 0, rerouted = 0, nearest_invalid = 0;
+  int rounded = 0, more_than_one_pass = 0, coarser_grid = 0, rerouted = 0, nearest_invalid = 0;
   int max_passes = 0;
   double max_relative = 0;
   std::string max_relative_mesh;
@@ -72,7 +71,6 @@ TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
     ++rounded;
     more_than_one_pass += report.passes > 1;
     coarser_grid += report.grid > 0;
-    last_resort += report.coarsened > 0;
     rerouted += report.rerouted > 0;
     nearest_invalid += !nearest_ok;
     max_passes = std::max(max_passes, report.passes);
@@ -86,9 +84,9 @@ TEST(RoundSafe, EverySharedMeshWithIntersectionsStaysAnArrangement) {
     EXPECT_GT(nearest_invalid, 0) << "rounding to nearest was valid everywhere: the test tells nothing";
   }
   std::printf("rounded %d shared meshes with intersections: %d needed more than one pass (at most %d), %d a "
-              "coarser grid (%d rounding per vertex), %d were rerouted, %d were invalid rounded to nearest; largest "
+              "coarser grid, %d were rerouted, %d were invalid rounded to nearest; largest "
               "move / bounding-box diagonal %.3g (%s)\n",
-              rounded, more_than_one_pass, max_passes, coarser_grid, last_resort, rerouted, nearest_invalid,
+              rounded, more_than_one_pass, max_passes, coarser_grid, rerouted, nearest_invalid,
               max_relative, max_relative_mesh.c_str());
 }
 
@@ -178,8 +176,8 @@ TEST(RoundSafe, TwoCopiesRotatedByPiNeedTheLastResort) {
   // An odd number of segments: the copy rotated by pi (sin(pi) is not 0 in doubles) has
   // its meridians between the original's, and the two cross along curves at grazing
   // angles near the poles, where the passes of rounding and arranging keep making new
-  // crossings at every level. Rerouting in cycles (or rounding per vertex: coarser grids
-  // only at the conflicts) settles it: few vertices move, by a few ulps.
+  // crossings at every level. Rerouting in cycles settles it: few vertices move, by a few
+  // ulps.
   for (int segments : {19, 39}) {
     const TriangleSoup soup = rotated_copies(uv_sphere({0, 0, 0}, 1.0, (segments + 1) / 2, segments), 2);
     const ArrangeResult first = arrange(soup, ArrangeOptions{});
@@ -188,14 +186,10 @@ TEST(RoundSafe, TwoCopiesRotatedByPiNeedTheLastResort) {
     bool nearest_ok = true;
     const RoundReport report = expect_safe_rounding(first.mesh, name, nearest_ok);
     EXPECT_FALSE(nearest_ok) << name;
-    EXPECT_GT(report.coarsened + report.rerouted, 0u)
-        << name << ": the passes alone settled it; the test tells nothing";
-    EXPECT_LT(report.coarsened, first.mesh.vertices.size() / 10) << name;
+    EXPECT_GT(report.rerouted, 0u) << name << ": the passes alone settled it; the test tells nothing";
     EXPECT_LE(report.max_move_relative, 1e-12) << name;
-    std::printf("%s: %d passes, %zu vertices on coarser grids (coarsest %.3g), %zu rerouted, %d cycles, largest "
-                "move / diagonal %.3g\n",
-                name.c_str(), report.passes, report.coarsened, report.grid, report.rerouted, report.reroute_cycles,
-                report.max_move_relative);
+    std::printf("%s: %d passes, grid %.3g, %zu rerouted, %d cycles, largest move / diagonal %.3g\n", name.c_str(),
+                report.passes, report.grid, report.rerouted, report.reroute_cycles, report.max_move_relative);
   }
 }
 
@@ -219,7 +213,6 @@ TEST(RoundSafe, EmberPairsAreReroutedAtTheirSlivers) {
     const RoundReport report = expect_safe_rounding(first.mesh, name, nearest_ok);
     EXPECT_FALSE(nearest_ok) << name;
     EXPECT_GT(report.rerouted, 0u) << name << ": the passes alone settled it; the test tells nothing";
-    EXPECT_EQ(report.coarsened, 0u) << name;
     EXPECT_EQ(report.grid, 0) << name;
     EXPECT_LE(report.max_move_relative, 1e-15) << name;
     std::printf("%s: %d passes and rounds, %zu vertices put on an edge or a face, largest move / diagonal %.3g\n",
@@ -296,42 +289,6 @@ TEST(RoundSafe, RerouteCyclesGoOnPastOneCycleWithoutFewerConflicts) {
   EXPECT_LE(report.max_move_relative, 1e-15);
   std::printf("sphere2 turned by pi: %d passes, %d cycles, %zu rerouted, largest move / diagonal %.3g\n",
               report.passes, report.reroute_cycles, report.rerouted, report.max_move_relative);
-}
-
-TEST(RoundSafe, RoundingPerVertexSettlesGrazingCopiesOnCoarserGridsAtTheConflicts) {
-  // The last resort on its own (round_safe reaches it only when rerouting and its cycles
-  // fail, which no input here does): two copies of a 10 x 19 sphere turned by pi about its
-  // box centre, from the nearest doubles of the exact arrangement. It settles with a few
-  // vertices on coarser grids, a few ulps off, and the result is an arrangement.
-  const ArrangeResult first = arrange(rotated_copies(uv_sphere({0, 0, 0}, 1.0, 10, 19), 2), ArrangeOptions{});
-  const OutputMesh& m = first.mesh;
-  std::vector<ExactVec3> exact;
-  std::vector<Vec3> nearest;
-  double largest = 0;
-  for (const tritri::ImplicitPoint& p : m.vertices) {
-    exact.push_back(tritri::to_exact(p));
-    nearest.push_back(tritri::to_double(exact.back()));
-    for (double c : nearest.back()) largest = std::max(largest, std::abs(c));
-  }
-  ASSERT_FALSE(check_arrangement(RoundedMesh{nearest, m.triangles, m.source, m.label_set, m.label_sets}).ok());
-  const std::optional<PerVertexRounding> per =
-      round_per_vertex(exact, nearest, m.triangles, m.source, m.label_set, m.label_sets, largest, 64,
-                       std::numeric_limits<double>::infinity());
-  ASSERT_TRUE(per.has_value());
-  // Within half that move it stops (no vertex moves beyond its limit).
-  const std::optional<PerVertexRounding> half = round_per_vertex(
-      exact, nearest, m.triangles, m.source, m.label_set, m.label_sets, largest, 64, per->max_move / 2);
-  EXPECT_FALSE(half.has_value());
-  EXPECT_TRUE(check_arrangement(per->mesh).ok());
-  const ArrangeStats s = arrange(as_input(per->mesh), ArrangeOptions{}).stats;
-  EXPECT_EQ(s.intersection_points + s.intersecting_pairs + s.merged_vertices + s.removed_degenerate, 0u);
-  EXPECT_EQ(s.out_triangles, per->mesh.triangles.size());
-  EXPECT_GT(per->coarsened, 0u);
-  EXPECT_LT(per->coarsened, nearest.size() / 10);
-  EXPECT_GT(per->grid, 0.0);
-  EXPECT_LE(per->max_move, std::ldexp(largest, -40));  // a few ulps: 2^-40 of the size is 2^12 ulps
-  std::printf("rounding per vertex, two copies 10 x 19: %d rounds, %zu vertices coarsened, move %.3g\n", per->rounds,
-              per->coarsened, per->max_move);
 }
 
 TEST(RoundSafe, RationalScenesOnTheExactPath) {

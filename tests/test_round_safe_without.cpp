@@ -80,8 +80,7 @@ TEST(RoundSafeWithout, StepsNotReachedChangeNothing) {
   RoundedMesh without;
   RoundReport without_report;
   const unsigned later = bit(RoundStep::merged_input) | bit(RoundStep::snapped_layers) |
-                         bit(RoundStep::snapped_contacts) | bit(RoundStep::level_1) | bit(RoundStep::per_vertex) |
-                         bit(RoundStep::nudging);
+                         bit(RoundStep::snapped_contacts) | bit(RoundStep::level_1) | bit(RoundStep::nudging);
   ASSERT_EQ(rounding_refusal(all.first.mesh, soup, later, without, without_report), "");
   EXPECT_EQ(without.vertices, all.mesh.vertices);
   EXPECT_EQ(without.triangles, all.mesh.triangles);

@@ -72,9 +72,8 @@ options:
                           vertices a few ulps apart merged and the input arranged
                           again, nearly coplanar faces snapped onto one plane, then
                           corners within a few ulps of a face they touch too, then
-                          a grid of 2^8 ulps, then every vertex rounded on its own, to
-                          coarser grids only at the conflicts, then vertices of the
-                          conflicts nudged by ulps (in cycles); no vertex
+                          a grid of 2^8 ulps, then vertices of the conflicts nudged by
+                          ulps (in cycles); no vertex
                           moves by more than a 64th of the model's diagonal (see
                           --round-max-move); provenance kept; exit status 4 if nothing
                           settles within 384 passes. Stats round_*
@@ -86,7 +85,7 @@ options:
   --round-without STEPS   with --round safe, for studies of the ladder: leave out these
                           steps (comma-separated: merged-nearest, rerouting,
                           merged-input, snapped-layers, snapped-contacts, level-1,
-                          per-vertex, coarse-levels, nudging); a mesh that only a
+                          nudging); a mesh that only a
                           left-out step settles is refused (exit status 4)
   --check                 verify the arrangement exactly: every pair of triangles with
                           overlapping boxes meets only in shared vertices and edges

@@ -111,10 +111,10 @@ def test_grazing_copies_settle_by_rerouting_in_cycles(k):
     out = tritri.arrange(V2, F2, rounding="safe")
     assert_is_arrangement(out)
     s = out["stats"]
-    assert s["round_rerouted"] > 0 and s["round_coarsened"] == 0
+    assert s["round_rerouted"] > 0
     assert 0 < s["round_max_move_rel"] < 1e-12
     plain = tritri.arrange(V2, F2)["stats"]
-    assert plain["round_coarsened"] == plain["round_rerouted"] == 0
+    assert plain["round_rerouted"] == 0
 
 
 def test_nearly_coincident_copies_merge_at_their_input_vertices():

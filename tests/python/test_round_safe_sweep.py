@@ -15,7 +15,7 @@ from conftest import REPO
 
 ARRANGE = Path(os.environ.get("TRITRI_ARRANGE_BIN", str(REPO / "build" / "bin" / "arrange")))
 KEYS = {"mesh", "variant", "file", "in_triangles", "status", "exit_code", "message", "wall_s", "round_passes",
-        "round_max_move_rel", "round_rerouted", "round_coarsened", "round_merged_input", "round_snapped_vertices",
+        "round_max_move_rel", "round_rerouted", "round_merged_input", "round_snapped_vertices",
         "round_nudged", "out_triangles", "t_total_s", "peak_rss_mb", "rounded_triangles"}
 TETRAHEDRON = ([(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.1, 0.2, 1.0)],
                [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)])

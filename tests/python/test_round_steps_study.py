@@ -1,7 +1,7 @@
 """bench/round_steps_study.py on one run that needs the ladder: a 10 x 19 UV sphere and its copy
 turned by pi about the vertical axis through its box centre, which rounding to nearest does not
 settle and rerouting does (asserted first, from arrange's own --stats). With the steps
-rerouting and per-vertex: leaving out per-vertex (never reached) gives the same run; leaving
+rerouting and level-1: leaving out level-1 (never reached) gives the same run; leaving
 out rerouting changes it (settled by a later step with nothing rerouted, or refused). The
 sweep rows are written here from the real arrange ($TRITRI_ARRANGE_BIN, default
 build/bin/arrange; the test fails, not skips, when it is missing). Also: a row whose variant
@@ -64,17 +64,17 @@ def sweep_row(tmp_path):
 def test_a_step_not_reached_changes_nothing_the_settling_one_does(tmp_path, capsys):
     sweep = sweep_row(tmp_path)
     out = tmp_path / "study.jsonl"
-    argv = [str(sweep), "--out", str(out), "--arrange", str(ARRANGE), "--steps", "rerouting,per-vertex",
+    argv = [str(sweep), "--out", str(out), "--arrange", str(ARRANGE), "--steps", "rerouting,level-1",
             "--jobs", "2"]
     assert round_steps_study.main(argv) == 0
     assert not Path(f"{out}.partial").exists()
     rows = {r["step"]: r for r in map(json.loads, out.read_text().splitlines())}
-    assert set(rows) == {"rerouting", "per-vertex"}
-    assert rows["per-vertex"]["same"] and rows["per-vertex"]["status"] == "settled"
+    assert set(rows) == {"rerouting", "level-1"}
+    assert rows["level-1"]["same"] and rows["level-1"]["status"] == "settled"
     assert not rows["rerouting"]["same"]
     assert rows["rerouting"]["status"] in ("settled", "refused")
     table = capsys.readouterr().out
-    assert "| per-vertex | 1 | 0 | 0 | 0 | 0 |" in table
+    assert "| level-1 | 1 | 0 | 0 | 0 | 0 |" in table
     assert "| rerouting | 0 |" in table
 
 

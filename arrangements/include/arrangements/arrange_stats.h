@@ -54,7 +54,6 @@ struct ArrangeStats {
   double peak_rss_mb = 0;
   int round_passes = 0;  // filled by the caller that rounds (round_mesh.h), else 0
   double round_max_move = 0, round_max_move_rel = 0;
-  std::size_t round_coarsened = 0;
   std::size_t round_rerouted = 0;
   std::size_t round_merged_input = 0;
   std::size_t round_snapped_vertices = 0;
@@ -132,13 +131,11 @@ inline constexpr auto kArrangeStats = std::make_tuple(
                "--round safe: every output vertex lies within this distance of the exact arrangement"),
     stat_entry("round_max_move_rel", &ArrangeStats::round_max_move_rel, -3,
                "round_max_move divided by the diagonal of the bounding box"),
-    stat_entry("round_coarsened", &ArrangeStats::round_coarsened, 0,
-               "--round safe: vertices its last resort moved to a coarser grid (0 unless the passes failed)"),
     stat_entry("round_rerouted", &ArrangeStats::round_rerouted, 0,
                "--round safe: vertices its last resort put on a nearby edge or face, each staying at its "
                "nearest double (0 unless the passes failed)"),
     stat_entry("round_merged_input", &ArrangeStats::round_merged_input, 0,
-               "--round safe: input vertices its last resort merged into another (within 4 to 2^32 ulps), the "
+               "--round safe: input vertices its last resort merged into another (within 4 to 256 ulps), the "
                "merged input arranged again (0 unless every other way failed)"),
     stat_entry("round_snapped_vertices", &ArrangeStats::round_snapped_vertices, 0,
                "--round safe: input vertices its last resort moved onto the plane of a nearly coplanar layer "

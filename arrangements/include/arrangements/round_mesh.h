@@ -35,9 +35,10 @@
 //   level 1 starts again from the exact arrangement, on the uniform grid of spacing
 //   h = 2^8 ulps of L (snap distance h): unlike the doubles, the grid is as coarse near
 //   zero as anywhere, so features thinner than a cell collapse instead of crossing again.
-//   Input vertices move too at level 1 (onto the grid). Levels 2-4 (grids of 2^16 to 2^32
-//   ulps, each after merging input vertices at its spacing) came next until a study
-//   (docs/ROUNDING.md) found that they settled nothing the other steps do not: gone.
+//   Input vertices move too at level 1 (onto the grid). Rounding per vertex (the vertices
+//   of conflicts alone to coarser grids) and levels 2-4 (grids of 2^16 to 2^32 ulps, each
+//   after merging input vertices at its spacing) came next until a study (docs/ROUNDING.md)
+//   found that they settled nothing the other steps do not: gone.
 //   Displacement: the points of a pass move by at most the snap distance or the rounding
 //   from a point of the previous pass's surface; report->max_move sums the largest move
 //   of each pass of the successful level (bounded from exact coordinate differences), so
@@ -54,8 +55,8 @@
 //   mesh) make crossings that rerouting would fight for many passes (five turned 12 x 24
 //   spheres: 17.5 s before, 2.3 s with this step). When that pass does not settle, it costs
 //   the pass and nothing else changes.
-//   Last resorts; rounding per vertex and the rounds of rerouting do not arrange again, so
-//   they make no new points (rerouting's cycles do, few):
+//   Last resorts; the rounds of rerouting and of nudging do not arrange again, so they make
+//   no new points (their cycles do, few):
 //   Rerouting (src/rounding/round_rerouting.h), when level 0 fails: every vertex stays at its
 //   nearest double; slivers whose apex lies within an ulp of the opposite edge collapse onto it, and of
 //   each violating pair the vertex within an ulp of the other's edge or face is put on it
@@ -70,18 +71,6 @@
 //   bound. Layers crossing at grazing angles with few conflicts settle this way (three
 //   copies of a 10 x 19 sphere rotated about its box centre: 7 cycles, 1.3e-15 of the
 //   diagonal).
-//   Rounding per vertex (src/rounding/round_per_vertex.h), when level 1 fails too (it moves
-//   only the vertices of conflicting triangles), from the
-//   arrangement's triangles, then from the rerouted ones. Every vertex of the exact
-//   arrangement goes to the nearest double; each round checks the rounded mesh exactly
-//   (check_arrangement) and moves the vertices of every violating pair, and only those,
-//   to the next coarser uniform grid
-//   (2^(2j) ulps of L, j <= 16); vertices that land on one position become one, collapsed
-//   triangles are dropped, triangles on the same three vertices become one with the union
-//   of their labels. It makes no new points, so it does not feed on itself the way the
-//   passes can where layers cross at grazing angles (two copies of a sphere rotated by pi,
-//   odd number of meridians, which rerouting's cycles now settle first; tested on its
-//   own): there it settles with a few vertices a few ulps off.
 //   Merging input vertices (src/rounding/round_merged_input.h), when rerouting fails and
 //   options.input is given, before level 1 (it moves vertices by a few ulps, level 1 by
 //   2^8 ulps): input vertices within 4 ulps of L of each other are merged
@@ -122,11 +111,9 @@
 //   Termination: the passes have no proof (3D snap rounding with a proven bound needs a
 //   grid far coarser than doubles): at most kLevels x 4 = 8 of them. Rerouting stops
 //   after 3 rounds without fewer violations, its cycles after 8 (or sooner, above).
-//   Rounding per vertex terminates by construction (each failed round raises a bounded
-//   level of some vertex) and gives up
-//   after two rounds without fewer violations, at a vertex needing more than 2^32 ulps,
-//   or when options.max_passes (passes and rounds together) is reached. Nudging lowers
-//   the violations with every move, and stops at a round without one; its cycles after 8. What is
+//   Every step stops when options.max_passes (passes and rounds together) is reached.
+//   Nudging lowers the violations with every move, and stops at a round without one; its
+//   cycles after 8. What is
 //   measured (tests/test_round_safe.cpp: every shared mesh with intersections, MCUT and
 //   EMBER pairs, rotated copies; tests/test_round_safe_input.cpp: the input steps) is given
 //   in the tests' output.
@@ -178,14 +165,12 @@ enum class RoundStep : unsigned {
   snapped_layers,           // snapping nearly coplanar faces onto one plane
   snapped_contacts,         // snapping corners onto the plane of a face they touch
   level_1,                  // the passes on the grid of 2^8 ulps
-  per_vertex,               // rounding per vertex
   nudging,                  // nudging and its cycles
 };
-inline constexpr std::size_t kRoundSteps = 8;
+inline constexpr std::size_t kRoundSteps = 7;
 // Their names, indexed by RoundStep (as `arrange --round-without` takes them).
 inline constexpr std::array<std::string_view, kRoundSteps> kRoundStepNames = {
-    "merged-nearest", "rerouting", "merged-input", "snapped-layers",
-    "snapped-contacts", "level-1", "per-vertex", "nudging"};
+    "merged-nearest", "rerouting", "merged-input", "snapped-layers", "snapped-contacts", "level-1", "nudging"};
 
 struct RoundSafeOptions {
   int max_passes = 384;  // passes of rounding and arranging, then rounds of the last resorts
@@ -215,9 +200,7 @@ struct RoundReport {
                                     // bounding box (never above max_move_relative, unless
                                     // 16 ulps are more)
   double grid = 0;                  // 0: rounded to nearest doubles (level 0); else the
-                                    // spacing of the uniform grid of the level that succeeded
-                                    // (the last resort: of the coarsest grid it used)
-  std::size_t coarsened = 0;        // vertices rounding per vertex put on a coarser grid
+                                    // spacing of level 1's grid, where that succeeded
   std::size_t rerouted = 0;         // vertices rerouting put on an edge or a face
                                     // (0 when the passes succeeded)
   std::size_t merged_input = 0;     // input vertices merged into another one (the last

@@ -1,5 +1,5 @@
 // The cycles of round_safe's ladder (Ladder, round_ladder.h): rerouting's (step 3) and
-// nudging's (step 8). Both alternate a last resort that makes no new points with arranging
+// nudging's (step 7). Both alternate a last resort that makes no new points with arranging
 // again, where the crossings its rounding left become points; their results keep the
 // ladder's invariant through Ladder::finish. Included by whoever runs a Ladder.
 #pragma once
@@ -45,8 +45,8 @@ auto Ladder<Mesh>::reroute(const RoundedMesh& m, int max_rounds) -> Rerouted {
 
 // Rerouting, in cycles: when one stalls, its best mesh is arranged again and rounded
 // (arrange_and_round), and rerouting goes on from there. The bound adds each cycle's
-// rounding move and an ulp per round of its rerouting. Keeps the first cycle's rerouting
-// (for rounding per vertex) and the cycle that left the fewest conflicts (for nudging).
+// rounding move and an ulp per round of its rerouting. Keeps the cycle that left the
+// fewest conflicts (for nudging).
 template <class Mesh>
 auto Ladder<Mesh>::reroute_in_cycles() -> Found {
   // The first cycle starts from the arrangement on its nearest doubles.
@@ -79,7 +79,6 @@ auto Ladder<Mesh>::reroute_in_cycles() -> Found {
     }
     const std::size_t triangles = now.mesh.triangles.size();
     RoundedMesh best = std::move(now.mesh);
-    if (cycle == 0) first_rerouting_ = std::move(now.rerouting);
     if (violations == 0) {
       r_.rerouted = rerouted;
       if (auto done = finish(std::move(best), cycle_move, 0.0)) return done;

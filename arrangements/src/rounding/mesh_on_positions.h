@@ -1,5 +1,5 @@
 // The triangles of an arrangement placed on rounded vertex positions, cleaned up: shared by
-// the last resorts of round_safe (round_rerouting.cpp, round_per_vertex.cpp).
+// the passes and last resorts of round_safe (round_ladder.h, round_rerouting.cpp, round_nudged.cpp).
 #pragma once
 
 #include <cstdint>

@@ -28,14 +28,11 @@
 //      layers, then corners near a touched face's plane, within 4^k ulps (k = 1..3) made
 //      coplanar exactly, settled as in 4.
 //   6. Level 1: the passes of 1 on the grid of 2^8 ulps.
-//   7. Per vertex (round_per_vertex.h, round_each_vertex): only the vertices of violating
-//      pairs move, to coarser grids of their own, from the arrangement's triangles, then
-//      from the first rerouting's.
-//   8. Nudging (round_nudged.h; nudge_in_cycles, ladder_cycles.h), the last step: the corners of the
+//   7. Nudging (round_nudged.h; nudge_in_cycles, ladder_cycles.h), the last step: the corners of the
 //      conflicts that rerouting's best cycle left move by 1 to 1024 ulps one at a time
 //      where that leaves fewer; in cycles of arranging again and rerouting.
 // Every step counts its passes against options.max_passes (less the nudging reserve). A
-// study leaves steps 2-8 out by options.without (RoundStep), in every ladder it starts.
+// study leaves steps 2-7 out by options.without (RoundStep), in every ladder it starts.
 #pragma once
 
 #include <algorithm>
@@ -56,7 +53,6 @@
 #include "rounding/ladder_limits.h"
 #include "rounding/round_merged_input.h"
 #include "rounding/round_snapped_planes.h"
-#include "rounding/round_per_vertex.h"
 #include "rounding/round_refusal.h"
 #include "rounding/round_rerouting.h"
 #include "rounding/round_to_grid.h"
@@ -132,13 +128,10 @@ class Ladder {
       if (auto done = input_step(1, 3, snapped_before, &Ladder::snap_contacts_within,
                                  &SnappedPlanes::moved, &RoundReport::snapped_vertices))
         return *done;
-    // Level 1, then rounding per vertex (only the vertices of conflicts move). The coarser
-    // levels 2-4 that came next (each after merging the input at its spacing) settled
-    // nothing in the sweep or the tests that these steps do not (docs/ROUNDING.md): gone.
+    // Level 1. Rounding per vertex and the coarser levels 2-4 that came next settled
+    // nothing in the sweep or the tests that the other steps do not (docs/ROUNDING.md).
     if (uses(RoundStep::level_1) && r_.passes < budget_ && levels_ > 1)
       if (auto done = passes_at_level(1)) return *done;
-    if (uses(RoundStep::per_vertex))
-      if (auto done = round_each_vertex()) return *done;
     if (uses(RoundStep::nudging))
       if (auto done = nudge_in_cycles()) return *done;
     refuse();
@@ -292,35 +285,6 @@ class Ladder {
     return settle_input(changed.soup, changed.max_move, note, 1, 0, 1);
   }
 
-  // Rounding per vertex from the arrangement's triangles, then from the first cycle's
-  // rerouted ones (within an ulp per round of rerouting of the rounded ones: extra_move).
-  Found round_each_vertex() {
-    if (r_.passes >= budget_) return std::nullopt;
-    auto from = [&](const std::vector<Tri>& triangles, const std::vector<std::int64_t>& source,
-                    const std::vector<int>& label_set, const std::vector<LabelSet>& label_sets,
-                    double extra_move) -> Found {
-      if (extra_move > move_limit_) return std::nullopt;
-      std::optional<PerVertexRounding> per =
-          round_per_vertex(exact_, nearest_positions_, triangles, source, label_set, label_sets, largest_,
-                           budget_ - r_.passes, move_limit_ - extra_move);
-      if (!per) return std::nullopt;
-      r_.passes += per->rounds;
-      r_.coarsened = per->coarsened;
-      if (auto done = finish(per->mesh, per->max_move + extra_move, per->grid)) return done;
-      r_.coarsened = 0;
-      return std::nullopt;
-    };
-    if (auto done = from(mesh_.triangles, mesh_.source, mesh_.label_set, mesh_.label_sets, 0.0)) return done;
-    const Rerouting& first = first_rerouting_;
-    if (first.rerouted > 0) {
-      r_.rerouted = first.rerouted;
-      if (auto done = from(first.triangles, first.source, first.label_set, first.label_sets, ulp_ * first.rounds))
-        return done;
-      r_.rerouted = 0;
-    }
-    return std::nullopt;
-  }
-
   Found nudge_in_cycles();  // ladder_cycles.h
 
   [[noreturn]] void refuse() {
@@ -356,9 +320,8 @@ class Ladder {
   double move_limit_ = 0;
   ArrangeStats last_{};        // what the latest pass's arrangement found
   int last_level_ = 0;         // the grid level of that pass
-  std::vector<ExactVec3> exact_;        // the arrangement's vertices (for the last resorts)
+  std::vector<ExactVec3> exact_;        // the arrangement's vertices (for rerouting)
   std::vector<Vec3> nearest_positions_;  // and their nearest doubles
-  Rerouting first_rerouting_;           // rerouting's first cycle, for rounding per vertex
   // Rerouting's cycle that left the fewest conflicts, for nudging: its mesh, the
   // conflicts, its move, the vertices rerouted and the cycles up to it.
   std::optional<RoundedMesh> fewest_;

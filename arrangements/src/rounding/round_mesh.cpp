@@ -38,7 +38,6 @@ void add_round_report(const RoundReport& report, const RoundedMesh& written, Arr
   stats.round_passes = report.passes;
   stats.round_max_move = report.max_move;
   stats.round_max_move_rel = report.max_move_relative;
-  stats.round_coarsened = report.coarsened;
   stats.round_rerouted = report.rerouted;
   stats.round_merged_input = report.merged_input;
   stats.round_snapped_vertices = report.snapped_vertices;

@@ -59,8 +59,7 @@ inline std::string refusal_message(const RefusalFacts& f) {
          std::to_string(f.last.merged_vertices) + " vertices and removed " +
          std::to_string(f.last.removed_degenerate + f.last.removed_duplicate) +
          " degenerate or duplicate triangles. Tried: rerouting (it stops after 3 rounds without fewer "
-         "violations), nudging, the grid of 2^8 ulps, rounding per vertex (after two rounds without fewer "
-         "conflicts, or at a grid of 2^32 ulps)" +
+         "violations), nudging, the grid of 2^8 ulps" +
          (f.input_steps ? std::string(", merging input vertices (within 4 to 256 ulps), snapping nearly coplanar "
                                       "faces")
                         : std::string()) +

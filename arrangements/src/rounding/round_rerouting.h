@@ -22,8 +22,7 @@
 //
 // Termination: at most max_rounds rounds; it stops earlier after 3 rounds in a row without
 // fewer violations than the best round. What is left of the conflicts then is for the
-// coarser grids and round_per_vertex (round_per_vertex.h), which also tries the best
-// round's triangles.
+// cycles of arranging again, the input steps, level 1 and nudging (round_ladder.h).
 // Cost per round: one check (rounding/violation_tracker.h: the first round every pair, later
 // ones only the pairs with a triangle the round before did not have), exact distance tests
 // (rationals of the doubles, after a double filter) on the triangles of violating pairs, a

@@ -1,6 +1,6 @@
 // The grids round_safe rounds to (round_mesh.h) and the displacement bound it reports:
-// shared by the passes of rounding and arranging (round_mesh.cpp) and the last resort of
-// rounding per vertex (round_per_vertex.cpp).
+// shared by the passes of rounding and arranging (round_to_grid.h, round_ladder.h) and the
+// last resorts.
 #pragma once
 
 #include <CGAL/Gmpq.h>

@@ -1,6 +1,6 @@
 // ViolationTracker: the violating pairs of a rounded mesh that changes a little from round
 // to round, checked again only where it changed. Shared by the passes and the last resorts
-// of round_safe (round_ladder.h, round_rerouting.cpp, round_per_vertex.cpp).
+// of round_safe (round_ladder.h, ladder_cycles.h, round_rerouting.cpp).
 #pragma once
 
 #include <array>
