@@ -8,7 +8,9 @@ A measurement, not a test. SWEEP.jsonl is the output of bench/round_safe_sweep.p
 --work (its variant files must still exist) and with the same arrange. Every run that it
 records as settled after more than one pass (rounding to nearest alone did not settle it, so
 the ladder's steps ran) is run again once per step, with `--round-without STEP`
-(docs/ROUNDING.md lists the steps), at 1 thread (the sweep's default), --jobs at once. Leaving out a step that the
+(docs/ROUNDING.md lists the steps), at 1 thread and the default move limit (the sweep's
+defaults: a sweep run otherwise is not comparable), --jobs at once. Leaving out a step that
+was tried and failed frees its passes for the later steps, which can also change a run. Leaving out a step that the
 run never reached, or that failed on it, gives the same result; a run where the step settled
 comes out different: settled by a later step (another step settles it too) or not at all
 (refused, timed out: only this step settles it). "Same" compares the output:
@@ -76,13 +78,15 @@ def parse_args(argv):
     ap.add_argument("--jobs", type=integer(1, 256), default=1, help="runs at once (default 1)")
     ap.add_argument("--timeout", type=seconds(0, 10**7), default=120, help="per run (default 120 s; 0: none)")
     args = ap.parse_args(argv)
+    if not STEPS:
+        ap.error(f"cannot read the step names (kRoundStepNames) from {ROUND_MESH_H}")
     if not (os.path.isfile(args.arrange) and os.access(args.arrange, os.X_OK)):
         ap.error(f"--arrange {args.arrange}: no such executable")
     return args, ap
 
 
 def load_sweep(file):
-    """The sweep's settled runs that needed more than one pass, and its thread count."""
+    """The sweep's settled runs that needed more than one pass."""
     rows = []
     with open(file, encoding="utf-8") as f:
         for number, line in enumerate(f, 1):

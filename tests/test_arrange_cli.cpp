@@ -170,7 +170,8 @@ TEST(ArrangeCli, EveryHostileOptionValueIsAUsageError) {
   cases.push_back({mesh, "--stats", "--round", "nearest", "--round-max-move", "0.5"});
   cases.push_back({mesh, "--stats", "--round", "safe", "--round-max-move", "0.5", "--round-max-move", "0.5"});
   // The steps left out: known names, comma-separated, only with --round safe, once.
-  for (const std::string v : {"", "bogus", "nudging,", ",nudging", "nudging,,rerouting", "Nudging", "level_1"})
+  for (const std::string v :
+       {"", "bogus", "nudging,", ",nudging", "nudging,,rerouting", "Nudging", "level_1", "nudging,rerouting,nudging"})
     cases.push_back({mesh, "--stats", "--round", "safe", "--round-without", v});
   cases.push_back({mesh, "--stats", "--round-without", "nudging"});
   cases.push_back({mesh, "--stats", "--round", "safe", "--round-without", "nudging", "--round-without", "nudging"});

@@ -172,9 +172,8 @@ TriangleSoup with_shifted_copy(TriangleSoup soup, const Vec3& axis, const Vec3& 
   return concatenate(soup, turned(soup, centre, axis, 1e-7, shift));
 }
 
-// The shifted copy settles either by merging the input within a coarse distance (each
-// copied vertex into its original, before the level of that distance rounds every vertex
-// to its grid), or with the two layers kept apart, every vertex within 1e-12 of the diagonal
+// The shifted copy settles either by merging the input (each copied vertex into its
+// original, within at most 256 ulps), or with the two layers kept apart, every vertex within 1e-12 of the diagonal
 // (a few thousand ulps at most, where nudging's cycles arranged again; the merge moves them
 // by 1e-8): the copy's corners snapped onto nearly coplanar faces or not, what rerouting
 // leaves nudged.

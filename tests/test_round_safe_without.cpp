@@ -17,7 +17,6 @@ namespace {
 
 using namespace arrangements;
 
-unsigned bit(RoundStep step) { return 1u << static_cast<unsigned>(step); }
 
 // round_safe of `exact` with `without`; the message of its RoundingError, "" when it settles.
 std::string rounding_refusal(const OutputMesh& exact, const TriangleSoup& input, unsigned without, RoundedMesh& out,
@@ -61,7 +60,7 @@ TEST(RoundSafeWithout, LeavingOutNudgingRefusesWhatOnlyNudgingSettles) {
   RoundedMesh without;
   RoundReport without_report;
   const std::string refusal =
-      rounding_refusal(all.first.mesh, soup, bit(RoundStep::nudging), without, without_report);
+      rounding_refusal(all.first.mesh, soup, round_step_bit(RoundStep::nudging), without, without_report);
   EXPECT_NE(refusal.find("; left out: nudging"), std::string::npos) << refusal;
   EXPECT_EQ(without_report.nudged, 0u);
   EXPECT_GT(without_report.conflicts_left, 0u);
@@ -79,8 +78,8 @@ TEST(RoundSafeWithout, StepsNotReachedChangeNothing) {
   ASSERT_EQ(all.report.nudged, 0u);
   RoundedMesh without;
   RoundReport without_report;
-  const unsigned later = bit(RoundStep::merged_input) | bit(RoundStep::snapped_layers) |
-                         bit(RoundStep::snapped_contacts) | bit(RoundStep::level_1) | bit(RoundStep::nudging);
+  const unsigned later = round_step_bit(RoundStep::merged_input) | round_step_bit(RoundStep::snapped_layers) |
+                         round_step_bit(RoundStep::snapped_contacts) | round_step_bit(RoundStep::level_1) | round_step_bit(RoundStep::nudging);
   ASSERT_EQ(rounding_refusal(all.first.mesh, soup, later, without, without_report), "");
   EXPECT_EQ(without.vertices, all.mesh.vertices);
   EXPECT_EQ(without.triangles, all.mesh.triangles);
@@ -90,7 +89,7 @@ TEST(RoundSafeWithout, StepsNotReachedChangeNothing) {
   // Without rerouting (and so nudging), a later step settles it with no vertex rerouted,
   // or nothing does and the refusal names both.
   const std::string refusal =
-      rounding_refusal(all.first.mesh, soup, bit(RoundStep::rerouting), without, without_report);
+      rounding_refusal(all.first.mesh, soup, round_step_bit(RoundStep::rerouting), without, without_report);
   EXPECT_EQ(without_report.rerouted, 0u);
   EXPECT_EQ(without_report.nudged, 0u);
   if (!refusal.empty()) EXPECT_NE(refusal.find("; left out: rerouting"), std::string::npos) << refusal;

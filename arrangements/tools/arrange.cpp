@@ -83,10 +83,8 @@ options:
                           the origin) settles only with moves of a fifth of its size or
                           more: F = 1 accepts them
   --round-without STEPS   with --round safe, for studies of the ladder: leave out these
-                          steps (comma-separated: merged-nearest, rerouting,
-                          merged-input, snapped-layers, snapped-contacts, level-1,
-                          nudging); a mesh that only a
-                          left-out step settles is refused (exit status 4)
+                          steps (comma-separated names, listed at the end); a mesh
+                          that only a left-out step settles is refused (exit status 4)
   --check                 verify the arrangement exactly: every pair of triangles with
                           overlapping boxes meets only in shared vertices and edges
                           (tritri on the implicit points; with --round safe, on the rounded
@@ -126,8 +124,10 @@ not converge (or, for a Boolean, its rounded output is not closed).
 )";
 
 std::string usage() {
-  return kUsage + std::string("JSON keys (--stats), in this order:\n") + arrangements::stats_key_list(2, 26, 90) +
-         kUsageEnd;
+  std::string steps;
+  for (const auto name : arrangements::kRoundStepNames) steps += (steps.empty() ? "  " : ", ") + std::string(name);
+  return kUsage + std::string("Steps of --round safe that --round-without takes, in the order they are tried:\n") +
+         steps + "\n\nJSON keys (--stats), in this order:\n" + arrangements::stats_key_list(2, 26, 90) + kUsageEnd;
 }
 
 // The RoundSafeOptions::without bits of a comma-separated list of step names.
@@ -144,7 +144,9 @@ unsigned round_steps(const std::string& list, const arrangements::detail::Comman
       for (const auto n : kRoundStepNames) known += (known.empty() ? "" : ", ") + std::string(n);
       args.usage_error("unknown rounding step '" + name + "' in --round-without (known: " + known + ")");
     }
-    bits |= 1u << (found - kRoundStepNames.begin());
+    const unsigned bit = arrangements::round_step_bit(static_cast<arrangements::RoundStep>(found - kRoundStepNames.begin()));
+    if (bits & bit) args.usage_error("rounding step '" + name + "' given twice in --round-without");
+    bits |= bit;
     if (end == list.size()) return bits;
     begin = end + 1;
   }

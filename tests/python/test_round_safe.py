@@ -11,7 +11,7 @@ tritri.arrange(..., rounding="safe") returns a float64 mesh that is itself an ar
   passes and a displacement bound;
 - two and three copies of a sphere with 19 meridians turned about its box centre (grazing
   crossings) need rerouting in cycles of arranging again: stats report round_rerouted > 0
-  and nothing on a coarser grid;
+  (none without --round safe);
 - three copies of a 12 x 24 sphere turned by 2 pi / 3 (the copies' vertices a few ulps
   apart, the layers crossing wherever the rounding errors change sign) settle only by
   the last resort that merges input vertices: stats report round_merged_input > 0, and

@@ -81,8 +81,8 @@ RoundReport expect_safe_rounding(const Mesh& exact, const std::string& name, boo
   EXPECT_EQ(s.out_vertices, r.vertices.size()) << name;
 
   // Provenance: (source, label set) pairs of the rounded mesh are those of the exact one;
-  // on a coarser grid, with merged or snapped input vertices, or where rerouting or
-  // rounding per vertex put two triangles on the same three vertices, layers merged into
+  // on level 1's grid, with merged or snapped input vertices, or where rerouting put two
+  // triangles on the same three vertices, layers merged into
   // one carry the union of their labels.
   // Also at the nearest doubles, two triangles of layers 1e-17 apart may land on the same
   // three vertices: one triangle with its own source, its label set and more.

@@ -167,10 +167,12 @@ enum class RoundStep : unsigned {
   level_1,                  // the passes on the grid of 2^8 ulps
   nudging,                  // nudging and its cycles
 };
-inline constexpr std::size_t kRoundSteps = 7;
+inline constexpr std::size_t kRoundSteps = static_cast<std::size_t>(RoundStep::nudging) + 1;
 // Their names, indexed by RoundStep (as `arrange --round-without` takes them).
 inline constexpr std::array<std::string_view, kRoundSteps> kRoundStepNames = {
     "merged-nearest", "rerouting", "merged-input", "snapped-layers", "snapped-contacts", "level-1", "nudging"};
+// The bit of RoundSafeOptions::without that leaves `step` out.
+constexpr unsigned round_step_bit(RoundStep step) { return 1u << static_cast<unsigned>(step); }
 
 struct RoundSafeOptions {
   int max_passes = 384;  // passes of rounding and arranging, then rounds of the last resorts
@@ -188,8 +190,8 @@ struct RoundSafeOptions {
   // The input that `mesh` is the arrangement of (double path only; optional): enables the
   // input steps (merging input vertices, snapping nearly coplanar faces).
   const TriangleSoup* input = nullptr;
-  // The steps left out, bit 1 << RoundStep each (0: every step; for studies of the ladder:
-  // a mesh that only a left-out step settles is refused).
+  // The steps left out, round_step_bit each (0: every step; for studies of the ladder: a
+  // mesh that only a left-out step settles is refused). Bits beyond kRoundSteps mean nothing.
   unsigned without = 0;
 };
 

@@ -141,7 +141,7 @@ class Ladder {
   using Found = std::optional<RoundedMesh>;
 
   // Whether options.without leaves `step` in (a study of the ladder leaves some out).
-  bool uses(RoundStep step) const { return ((options_.without >> static_cast<unsigned>(step)) & 1u) == 0; }
+  bool uses(RoundStep step) const { return (options_.without & round_step_bit(step)) == 0; }
 
   // The result, with the report filled, when within the move limit, not emptied and, where
   // options.keep_closed asks, closed.
@@ -183,7 +183,7 @@ class Ladder {
       ArrangeStats again;
       OutputMesh arranged = arrange_locally(clean, violating, arrange_options_, again);
       // A pass that does not reduce the intersections, or grows the mesh by more than a
-      // tenth, means this grid keeps making features it cannot hold: go to the next level
+      // tenth, means this grid keeps making features it cannot hold: go to the next step
       // (before the passes grow the mesh without bound).
       const bool worse = (pass > 1 && again.intersecting_pairs >= last_.intersecting_pairs) ||
                          again.out_triangles > level_triangles + level_triangles / 10;

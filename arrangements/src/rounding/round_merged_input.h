@@ -1,5 +1,5 @@
 // merge_close_input_vertices: the step of round_safe (arrangements/round_mesh.h) that goes
-// back to the input (after rerouting, before the coarser grids), for surfaces that nearly
+// back to the input (after rerouting, before level 1's grid), for surfaces that nearly
 // coincide: copies of one mesh placed by transforms rounded to doubles (instances, rotated
 // copies), whose vertices lie a few ulps apart. Their exact arrangement crosses the layers
 // wherever the rounding errors change sign, in far more places than the input has

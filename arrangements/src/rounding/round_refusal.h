@@ -38,7 +38,7 @@ inline std::string short_number(double x) {
 inline std::string left_out(unsigned without) {
   std::string names;
   for (std::size_t k = 0; k < kRoundSteps; ++k)
-    if ((without >> k) & 1u) names += (names.empty() ? "; left out: " : ", ") + std::string(kRoundStepNames[k]);
+    if (without & round_step_bit(static_cast<RoundStep>(k))) names += (names.empty() ? "; left out: " : ", ") + std::string(kRoundStepNames[k]);
   return names;
 }
 
