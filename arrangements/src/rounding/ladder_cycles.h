@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "arrangements/arrange_stats.h"
 #include "rounding/arrange_locally.h"
@@ -49,9 +50,13 @@ auto Ladder<Mesh>::reroute(const RoundedMesh& m, int max_rounds) -> Rerouted {
 // fewest conflicts (for nudging).
 template <class Mesh>
 auto Ladder<Mesh>::reroute_in_cycles() -> Found {
-  // The first cycle starts from the arrangement on its nearest doubles.
-  RoundedMesh cycle_mesh{nearest_positions_, mesh_.triangles, mesh_.source, mesh_.label_set, mesh_.label_sets};
-  double cycle_move = largest_distance(exact_, nearest_positions_);
+  // The first cycle starts from the arrangement on its nearest doubles (the exact vertices
+  // give its move; only rerouting needs either, so they are made here).
+  std::vector<ExactVec3> exact;
+  std::vector<Vec3> nearest;
+  exact_and_nearest(mesh_, exact, nearest);
+  double cycle_move = largest_distance(exact, nearest);
+  RoundedMesh cycle_mesh{std::move(nearest), mesh_.triangles, mesh_.source, mesh_.label_set, mesh_.label_sets};
   std::size_t rerouted = 0;
   // Rerouting stops at kReroutePasses, leaving the rest of the budget to the steps below.
   const int reroute_limit = std::min(budget_, kReroutePasses);

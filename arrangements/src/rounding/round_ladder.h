@@ -110,7 +110,6 @@ class Ladder {
       if (auto done = merged_input_at_nearest()) return *done;
     // Rerouting moves the surface by an ulp per round only, so it comes before level 1 and
     // the input changes.
-    exact_and_nearest(mesh_, exact_, nearest_positions_);
     if (uses(RoundStep::rerouting))
       if (auto done = reroute_in_cycles()) return *done;
     // Merged input within 4, 16, 64, then 256 ulps (before the grids' 2^8 ulps or more).
@@ -320,8 +319,6 @@ class Ladder {
   double move_limit_ = 0;
   ArrangeStats last_{};        // what the latest pass's arrangement found
   int last_level_ = 0;         // the grid level of that pass
-  std::vector<ExactVec3> exact_;        // the arrangement's vertices (for rerouting)
-  std::vector<Vec3> nearest_positions_;  // and their nearest doubles
   // Rerouting's cycle that left the fewest conflicts, for nudging: its mesh, the
   // conflicts, its move, the vertices rerouted and the cycles up to it.
   std::optional<RoundedMesh> fewest_;
