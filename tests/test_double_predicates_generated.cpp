@@ -1,6 +1,6 @@
 // tests/test_double_predicates_generated.cpp
 //
-// tritri::orient3d / tritri::orient2d on doubles against the exact oracle, on the
+// tritri::orient3d / orient3d_each / orient2d on doubles against the exact oracle, on the
 // generated families of support/orient_cases.h (orient2d also on 3D points projected to
 // XY, YZ and ZX, the dropped coordinate junk). Prints per family how many cases are exact
 // zeros, how many plain double evaluation gets wrong, and which stage the documented
@@ -121,6 +121,36 @@ TEST_P(GeneratedCases, Orient3dMatchesExactRationalSign) {
   }
   t.print(std::string("orient3d ") + family_name(plan.family));
   g_total3.add(t);
+}
+
+// orient3d_each shares one normal between three queries against plane(p0, p1, p2): the
+// generated fourth point (near the plane in most families), a vertex of the plane (an
+// exact zero) and the fourth point of another case of the family, in rotating slots.
+TEST_P(GeneratedCases, Orient3dEachMatchesExactRationalSign) {
+  const FamilyPlan plan = GetParam();
+  Rng r(orient_seed(400 + static_cast<int>(plan.family)));
+  const long n = tritri_test::scaled_count(plan.count / 4);
+  int failures = 0;
+  for (long i = 0; i < n && failures < kMaxReportedFailures; ++i) {
+    const Case<3> p = generate<3>(plan.family, r), q = generate<3>(plan.family, r);
+    const int slot = static_cast<int>(i % 3);
+    Pt<3> d[3];
+    d[slot] = p[3];
+    d[(slot + 1) % 3] = p[(slot + 1) % 3];
+    d[(slot + 2) % 3] = q[3];
+    const double* const dp[3] = {d[0].data(), d[1].data(), d[2].data()};
+    Sign got[3];
+    tritri::orient3d_each(p[0].data(), p[1].data(), p[2].data(), dp, got);
+    for (int j = 0; j < 3; ++j) {
+      const Case<3> c = {p[0], p[1], p[2], d[j]};
+      const int want = exact_sign(c);
+      if (sign_of(got[j]) != want) {
+        ++failures;
+        ADD_FAILURE() << "orient3d_each, query " << j << describe(c) << " = " << sign_of(got[j]) << ", exact "
+                      << want;
+      }
+    }
+  }
 }
 
 TEST_P(GeneratedCases, Orient2dMatchesExactRationalSignOnEveryPlane) {

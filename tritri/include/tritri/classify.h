@@ -91,21 +91,27 @@ class Classifier {
  public:
   using P = typename K::Point;
 
-  Classifier(const K& k, const P* const (&a)[3], const P* const (&b)[3]) : k_(k), a_(a), b_(b) {}
+  // Writes into r, which the caller constructs in its return slot: copying a Result out
+  // of the classifier would reread, as whole words, bytes just written one by one.
+  Classifier(const K& k, const P* const (&a)[3], const P* const (&b)[3], Result& r) : k_(k), a_(a), b_(b), r_(r) {}
 
-  Result run() {
-    for (int j = 0; j < 3; ++j) ob_[j] = to_int(k_.orient3d(*a_[0], *a_[1], *a_[2], *b_[j]));
-    if (strictly_one_side(ob_)) return r_;
+  void run() {
+    Sign sb[3];
+    orient3d_each(k_, *a_[0], *a_[1], *a_[2], *b_[0], *b_[1], *b_[2], sb);
+    for (int j = 0; j < 3; ++j) ob_[j] = to_int(sb[j]);
+    if (strictly_one_side(ob_)) return;
     if (all_zero(ob_)) {
       // B lies in plane(A), or A is degenerate. If both are proper triangles the planes
       // coincide, so A's signs against plane(B) are all zero and need no evaluation;
       // coplanar() checks both for degeneracy.
       coplanar();
       finish();
-      return r_;
+      return;
     }
-    for (int i = 0; i < 3; ++i) oa_[i] = to_int(k_.orient3d(*b_[0], *b_[1], *b_[2], *a_[i]));
-    if (strictly_one_side(oa_)) return r_;
+    Sign sa[3];
+    orient3d_each(k_, *b_[0], *b_[1], *b_[2], *a_[0], *a_[1], *a_[2], sa);
+    for (int i = 0; i < 3; ++i) oa_[i] = to_int(sa[i]);
+    if (strictly_one_side(oa_)) return;
     if (all_zero(oa_)) {
       r_.degenerate = true;  // A spans a plane that B's vertices are not all in: B is degenerate
     } else if (oa_[0] * oa_[1] * oa_[2] != 0 && ob_[0] * ob_[1] * ob_[2] != 0) {
@@ -114,7 +120,6 @@ class Classifier {
       crossing_with_vertices_in_planes();
     }
     finish();
-    return r_;
   }
 
  private:
@@ -334,7 +339,7 @@ class Classifier {
   const P* const (&b_)[3];
   int oa_[3] = {0, 0, 0};  // A's vertices against plane(B)
   int ob_[3] = {0, 0, 0};  // B's vertices against plane(A)
-  Result r_;
+  Result& r_;
 };
 
 }  // namespace detail
@@ -347,7 +352,9 @@ Result classify(const K& k, const typename K::Point& a0, const typename K::Point
   using P = typename K::Point;
   const P* const a[3] = {&a0, &a1, &a2};
   const P* const b[3] = {&b0, &b1, &b2};
-  return detail::Classifier<K>(k, a, b).run();
+  Result r;
+  detail::Classifier<K>(k, a, b, r).run();
+  return r;
 }
 
 // The same with a default-constructed kernel: classify<tritri::DoubleKernel>(a0, ..., b2).

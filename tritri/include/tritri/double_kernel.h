@@ -1,7 +1,7 @@
 // tritri/double_kernel.h
 //
 // DoubleKernel: points with double coordinates and the exact predicates of
-// double_predicates.h. Models tritri::OrderedKernel.
+// double_predicates.h. Models tritri::OrderedKernel, with the optional orient3d_each.
 //
 // Preconditions: finite coordinates. Exactness: every predicate exact for finite input.
 #pragma once
@@ -18,6 +18,11 @@ struct DoubleKernel {
 
   static Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
     return tritri::orient3d(a, b, c, d);
+  }
+  static void orient3d_each(const Point& a, const Point& b, const Point& c, const Point& d0, const Point& d1,
+                            const Point& d2, Sign (&s)[3]) {
+    const double* const d[3] = {d0.data(), d1.data(), d2.data()};
+    tritri::orient3d_each(a.data(), b.data(), c.data(), d, s);
   }
   static Sign orient2d(const Point& a, const Point& b, const Point& c, Plane plane) {
     return tritri::orient2d(a, b, c, plane);

@@ -1,6 +1,7 @@
 // tritri/double_predicates.h
 //
-// Exact orient3d / orient2d on double coordinates, in three stages:
+// Exact orient3d / orient2d on double coordinates (and orient3d_each: three points against
+// one plane), in three stages:
 //   1. a semi-static floating-point filter with a proven error bound (below);
 //   2. when the filter cannot decide and every coordinate is 0 or has magnitude in
 //      [2^-280, 2^280]: 128-bit integers if the differences are exact doubles within a
@@ -24,6 +25,7 @@
 // bound. For orient2d: 4 roundings, 2 terms, 8u = 8.88e-16, we use 8.9e-16.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -47,9 +49,10 @@ inline constexpr double kOrient2dBound = 8.9e-16;
 inline Sign to_sign(int s) noexcept { return s > 0 ? Sign::Positive : (s < 0 ? Sign::Negative : Sign::Zero); }
 
 // std::fmax handles NaN and often compiles to a library call; inputs here are finite.
+// std::fabs is one mask (a < 0 ? -a : a is not, because of -0.0).
 inline double max_abs(double a, double b) noexcept {
-  a = a < 0 ? -a : a;
-  b = b < 0 ? -b : b;
+  a = std::fabs(a);
+  b = std::fabs(b);
   return a > b ? a : b;
 }
 inline double max_abs(double a, double b, double c) noexcept { return max_abs(max_abs(a, b), c); }
@@ -98,8 +101,6 @@ bool all_expansion_safe(const double (&p)[N]) noexcept {
   return ok;
 }
 
-// Exact stages of orient3d (the filter failed or was out of range). Kept out of line so
-// that the filter stays small enough to inline.
 template <int N>
 bool any_two_points_equal(const double (&p)[N], int dim) noexcept {
   for (int i = 0; i < N; i += dim)
@@ -111,7 +112,8 @@ bool any_two_points_equal(const double (&p)[N], int dim) noexcept {
   return false;
 }
 
-[[gnu::noinline]] inline Sign orient3d_exact(const double (&p)[12]) {
+// Exact stages of orient3d (the filter failed or was out of range).
+inline Sign orient3d_exact(const double (&p)[12]) {
   // Repeated points (shared mesh vertices) make the determinant zero: skip the exact work.
   if (any_two_points_equal<12>(p, 3)) return Sign::Zero;
   if (!all_expansion_safe<12>(p)) {
@@ -135,7 +137,7 @@ bool any_two_points_equal(const double (&p)[N], int dim) noexcept {
   return to_sign(orient3d_expansion<double>(p));
 }
 
-[[gnu::noinline]] inline Sign orient2d_exact(const double (&p)[6]) {
+inline Sign orient2d_exact(const double (&p)[6]) {
   if (any_two_points_equal<6>(p, 2)) return Sign::Zero;
   if (!all_expansion_safe<6>(p)) {
     if constexpr (kLongDoubleExpansionsExact) return to_sign(orient2d_expansion<long double>(p));
@@ -153,6 +155,23 @@ bool any_two_points_equal(const double (&p)[N], int dim) noexcept {
   return to_sign(orient2d_expansion<double>(p));
 }
 
+// The filter failed or could not run: an axis whose differences are all exactly zero
+// puts the four points in one plane (fl(x - y) == 0 exactly when x == y); otherwise the
+// exact stages. Out of line, so that the filter path needs no stack frame.
+[[gnu::noinline]] inline Sign orient3d_unfiltered(const double* a, const double* b, const double* c, const double* d,
+                                                  double mx, double my, double mz) {
+  if (mx == 0 || my == 0 || mz == 0) return Sign::Zero;
+  const double p[12] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]};
+  return orient3d_exact(p);
+}
+
+[[gnu::noinline]] inline Sign orient2d_unfiltered(double ax, double ay, double bx, double by, double cx, double cy,
+                                                  double mx, double my) {
+  if (mx == 0 || my == 0) return Sign::Zero;  // the three points are on one axis line
+  const double p[6] = {ax, ay, bx, by, cx, cy};
+  return orient2d_exact(p);
+}
+
 }  // namespace detail
 
 // Sign of det[b-a; c-a; d-a]: Positive when d is on the side of plane abc that
@@ -164,22 +183,57 @@ inline Sign orient3d(const double* a, const double* b, const double* c, const do
   const double mx = detail::max_abs(ux, vx, wx);
   const double my = detail::max_abs(uy, vy, wy);
   const double mz = detail::max_abs(uz, vz, wz);
-  // A coordinate whose differences are all exactly zero puts the four points in one plane
-  // (fl(x - y) == 0 exactly when x == y).
-  if (mx == 0 || my == 0 || mz == 0) return Sign::Zero;
-  if (detail::in_filter_range(mx) && detail::in_filter_range(my) && detail::in_filter_range(mz)) {
-    const double det = ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
-    const double bound = detail::kOrient3dBound * mx * my * mz;
+  // One range test on the smallest and largest of mx, my, mz (a zero fails it). The
+  // determinant is computed first: out of range it may overflow, and is then unused.
+  const double det = ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
+  const double bound = detail::kOrient3dBound * mx * my * mz;
+  const double lo = std::min(mx, std::min(my, mz)), hi = std::max(mx, std::max(my, mz));
+  if (lo >= detail::kFilterMin && hi <= detail::kFilterMax) {
     if (det > bound) return Sign::Positive;
     if (det < -bound) return Sign::Negative;
   }
-  const double p[12] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]};
-  return detail::orient3d_exact(p);
+  return detail::orient3d_unfiltered(a, b, c, d, mx, my, mz);
 }
 
 inline Sign orient3d(const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& c,
                      const std::array<double, 3>& d) {
   return orient3d(a.data(), b.data(), c.data(), d.data());
+}
+
+namespace detail {
+// Points in or near the plane: the queries the shared filter left open (bits of
+// `unsure`), again through orient3d. Out of line, as orient3d_unfiltered.
+[[gnu::noinline]] inline void orient3d_each_unfiltered(const double* a, const double* b, const double* c,
+                                                       const double* const (&d)[3], int unsure, Sign (&s)[3]) {
+  for (int j = 0; j < 3; ++j)
+    if (unsure >> j & 1) s[j] = orient3d(a, b, c, d[j]);
+}
+}  // namespace detail
+
+// s[j] = orient3d(a, b, c, d[j]) for j = 0, 1, 2, with the normal (b-a) x (c-a) computed once:
+// det = (d-a) . ((b-a) x (c-a)) has the same six elementary terms as orient3d's
+// expansion, each through the same number of roundings, so the same bound holds with
+// each query's own mx, my, mz. The three filters run without branches; a query they
+// leave open goes through orient3d. Exact for all finite doubles.
+inline void orient3d_each(const double* a, const double* b, const double* c, const double* const (&d)[3],
+                          Sign (&s)[3]) {
+  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  const double mux = detail::max_abs(ux, vx), muy = detail::max_abs(uy, vy), muz = detail::max_abs(uz, vz);
+  int unsure = 0;  // bit j: the filter did not decide query j
+  for (int j = 0; j < 3; ++j) {
+    const double wx = d[j][0] - a[0], wy = d[j][1] - a[1], wz = d[j][2] - a[2];
+    const double mx = detail::max_abs(mux, wx), my = detail::max_abs(muy, wy), mz = detail::max_abs(muz, wz);
+    const double det = wx * nx + wy * ny + wz * nz;
+    const double bound = detail::kOrient3dBound * mx * my * mz;
+    const double lo = std::min(mx, std::min(my, mz)), hi = std::max(mx, std::max(my, mz));
+    const bool sure = lo >= detail::kFilterMin && hi <= detail::kFilterMax && (det > bound || det < -bound);
+    s[j] = det > 0 ? Sign::Positive : Sign::Negative;
+    unsure |= int(!sure) << j;
+  }
+  if (unsure) [[unlikely]]
+    detail::orient3d_each_unfiltered(a, b, c, d, unsure, s);
 }
 
 // Sign of det[b-a; c-a] in 2D: Positive when a, b, c turn counter-clockwise.
@@ -188,15 +242,13 @@ inline Sign orient2d(double ax, double ay, double bx, double by, double cx, doub
   const double ux = bx - ax, uy = by - ay, vx = cx - ax, vy = cy - ay;
   const double mx = detail::max_abs(ux, vx);
   const double my = detail::max_abs(uy, vy);
-  if (mx == 0 || my == 0) return Sign::Zero;  // the three points are on one axis line
-  if (detail::in_filter_range(mx) && detail::in_filter_range(my)) {
-    const double det = ux * vy - uy * vx;
-    const double bound = detail::kOrient2dBound * mx * my;
+  const double det = ux * vy - uy * vx;
+  const double bound = detail::kOrient2dBound * mx * my;
+  if (std::min(mx, my) >= detail::kFilterMin && std::max(mx, my) <= detail::kFilterMax) {
     if (det > bound) return Sign::Positive;
     if (det < -bound) return Sign::Negative;
   }
-  const double p[6] = {ax, ay, bx, by, cx, cy};
-  return detail::orient2d_exact(p);
+  return detail::orient2d_unfiltered(ax, ay, bx, by, cx, cy, mx, my);
 }
 
 // orient2d of 3D points projected onto `plane` (see Plane for the axis order).

@@ -14,6 +14,9 @@
 //   k.equal(a, b) -> bool                     exact coincidence.
 // and optionally
 //   k.less(a, b) -> bool                      exact lexicographic (x, y, z) order.
+//   k.orient3d_each(a, b, c, d0, d1, d2, s)   s[j] = orient3d(a, b, c, dj) for j = 0, 1, 2
+//                                             (Sign s[3]): a kernel may share the plane's
+//                                             normal between the three (DoubleKernel does).
 //
 // All of them must be exact for every input the kernel accepts. The functions may be
 // static (called through a default-constructed K) or members (stateful kernels such as
@@ -38,5 +41,22 @@ template <class K>
 concept OrderedKernel = Kernel<K> && requires(const K& k, const typename K::Point& p) {
   { k.less(p, p) } -> std::convertible_to<bool>;
 };
+
+// s[j] = orient3d(a, b, c, dj) for j = 0, 1, 2: k.orient3d_each where the kernel has it,
+// else three orient3d calls (so a CountingKernel still counts three). The signs go out
+// through an array, not returned as one 3-byte value: unpacking that costs a
+// store-forwarding stall per call.
+template <Kernel K>
+void orient3d_each(const K& k, const typename K::Point& a, const typename K::Point& b, const typename K::Point& c,
+                   const typename K::Point& d0, const typename K::Point& d1, const typename K::Point& d2,
+                   Sign (&s)[3]) {
+  if constexpr (requires { k.orient3d_each(a, b, c, d0, d1, d2, s); }) {
+    k.orient3d_each(a, b, c, d0, d1, d2, s);
+  } else {
+    s[0] = k.orient3d(a, b, c, d0);
+    s[1] = k.orient3d(a, b, c, d1);
+    s[2] = k.orient3d(a, b, c, d2);
+  }
+}
 
 }  // namespace tritri
