@@ -11,10 +11,11 @@
 //   If one is degenerate and not strictly on one side of the other's plane, the result
 //   has degenerate == true and no points; a degenerate triangle strictly on one side of
 //   the other's plane may give an empty (correct) result without the flag.
-// Exactness: every decision is a kernel predicate (orient3d, orient2d); no constructions,
-//   no tolerances. The answer is exact whenever the kernel's predicates are, and
-//   identical for every exact kernel.
-// Complexity: O(1). 3 orient3d to reject or detect coplanarity, 6 for other pairs;
+// Exactness: every decision is a kernel predicate (orient3d, orient2d, and orient3d_each
+//   where the kernel has it); no constructions, no tolerances. The answer is exact
+//   whenever the kernel's predicates are, and identical for every exact kernel.
+// Complexity: O(1). 3 orient3d (one orient3d_each) to reject or detect coplanarity, 6
+//   (two) for other pairs;
 //   at most 4 more in general position and at most 12 more (plus at most 12 orient2d)
 //   when vertices lie in the other triangle's plane. Coplanar pairs: at most 22 orient2d.
 //   Nothing is evaluated that the signs already known rule out.
@@ -91,13 +92,14 @@ class Classifier {
  public:
   using P = typename K::Point;
 
-  // Writes into r, which the caller constructs in its return slot: copying a Result out
-  // of the classifier would reread, as whole words, bytes just written one by one.
+  // Writes into r, which the caller constructs in its return slot (named return value
+  // optimisation, which compilers do here): copying a Result out of the classifier would
+  // reread, as whole words, bytes just written one by one.
   Classifier(const K& k, const P* const (&a)[3], const P* const (&b)[3], Result& r) : k_(k), a_(a), b_(b), r_(r) {}
 
   void run() {
     Sign sb[3];
-    orient3d_each(k_, *a_[0], *a_[1], *a_[2], *b_[0], *b_[1], *b_[2], sb);
+    tritri::orient3d_each(k_, *a_[0], *a_[1], *a_[2], *b_[0], *b_[1], *b_[2], sb);
     for (int j = 0; j < 3; ++j) ob_[j] = to_int(sb[j]);
     if (strictly_one_side(ob_)) return;
     if (all_zero(ob_)) {
@@ -109,7 +111,7 @@ class Classifier {
       return;
     }
     Sign sa[3];
-    orient3d_each(k_, *b_[0], *b_[1], *b_[2], *a_[0], *a_[1], *a_[2], sa);
+    tritri::orient3d_each(k_, *b_[0], *b_[1], *b_[2], *a_[0], *a_[1], *a_[2], sa);
     for (int i = 0; i < 3; ++i) oa_[i] = to_int(sa[i]);
     if (strictly_one_side(oa_)) return;
     if (all_zero(oa_)) {

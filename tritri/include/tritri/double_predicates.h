@@ -11,11 +11,13 @@
 //      GMP integers.
 //
 // Preconditions: all coordinates finite (NaN / Inf give unspecified signs); IEEE binary64
-// with gradual underflow (no flush-to-zero, as -ffast-math would set).
+// with gradual underflow (no flush-to-zero, as -ffast-math would set) and no
+// floating-point traps (the filter may overflow on inputs it then does not use).
 // Exactness: the returned sign is the sign of the exact determinant, for every finite
 // input. Cost: a few nanoseconds on the filter path; ~100 ns to a few us otherwise.
 //
-// Filter bound (derived for this evaluation order): with differences rounded once, each
+// Filter bound (derived for both evaluation orders below: orient3d's expansion along
+// b-a, and orient3d_each's (d-a) . ((b-a) x (c-a))): with differences rounded once, each
 // of the six elementary terms of the 3x3 determinant passes through at most 8 roundings,
 // so |det_fp - det| <= 6 * gamma_8 * mx*my*mz / (1-u)^3 ~= 48u * mx*my*mz (u = 2^-53),
 // where mx, my, mz are the largest absolute coordinate differences. We use 5.4e-15
@@ -58,6 +60,13 @@ inline double max_abs(double a, double b) noexcept {
 inline double max_abs(double a, double b, double c) noexcept { return max_abs(max_abs(a, b), c); }
 
 inline bool in_filter_range(double m) noexcept { return m >= kFilterMin && m <= kFilterMax; }
+// All of them in range: one test on the smallest and the largest (a zero fails it).
+inline bool in_filter_range(double mx, double my) noexcept {
+  return std::min(mx, my) >= kFilterMin && std::max(mx, my) <= kFilterMax;
+}
+inline bool in_filter_range(double mx, double my, double mz) noexcept {
+  return std::min(mx, std::min(my, mz)) >= kFilterMin && std::max(mx, std::max(my, mz)) <= kFilterMax;
+}
 
 // True when x is zero or its magnitude is in the expansion-safe range.
 inline bool expansion_safe(double x) noexcept {
@@ -183,12 +192,11 @@ inline Sign orient3d(const double* a, const double* b, const double* c, const do
   const double mx = detail::max_abs(ux, vx, wx);
   const double my = detail::max_abs(uy, vy, wy);
   const double mz = detail::max_abs(uz, vz, wz);
-  // One range test on the smallest and largest of mx, my, mz (a zero fails it). The
-  // determinant is computed first: out of range it may overflow, and is then unused.
+  // The determinant is computed before the range test: out of range it may overflow, and
+  // is then unused.
   const double det = ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
   const double bound = detail::kOrient3dBound * mx * my * mz;
-  const double lo = std::min(mx, std::min(my, mz)), hi = std::max(mx, std::max(my, mz));
-  if (lo >= detail::kFilterMin && hi <= detail::kFilterMax) {
+  if (detail::in_filter_range(mx, my, mz)) {
     if (det > bound) return Sign::Positive;
     if (det < -bound) return Sign::Negative;
   }
@@ -213,8 +221,8 @@ namespace detail {
 // s[j] = orient3d(a, b, c, d[j]) for j = 0, 1, 2, with the normal (b-a) x (c-a) computed once:
 // det = (d-a) . ((b-a) x (c-a)) has the same six elementary terms as orient3d's
 // expansion, each through the same number of roundings, so the same bound holds with
-// each query's own mx, my, mz. The three filters run without branches; a query they
-// leave open goes through orient3d. Exact for all finite doubles.
+// each query's own mx, my, mz. The three filters run before any exact stage; a query
+// they leave open goes through orient3d. Exact for all finite doubles.
 inline void orient3d_each(const double* a, const double* b, const double* c, const double* const (&d)[3],
                           Sign (&s)[3]) {
   const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
@@ -227,8 +235,7 @@ inline void orient3d_each(const double* a, const double* b, const double* c, con
     const double mx = detail::max_abs(mux, wx), my = detail::max_abs(muy, wy), mz = detail::max_abs(muz, wz);
     const double det = wx * nx + wy * ny + wz * nz;
     const double bound = detail::kOrient3dBound * mx * my * mz;
-    const double lo = std::min(mx, std::min(my, mz)), hi = std::max(mx, std::max(my, mz));
-    const bool sure = lo >= detail::kFilterMin && hi <= detail::kFilterMax && (det > bound || det < -bound);
+    const bool sure = detail::in_filter_range(mx, my, mz) && (det > bound || det < -bound);
     s[j] = det > 0 ? Sign::Positive : Sign::Negative;
     unsure |= int(!sure) << j;
   }
@@ -244,7 +251,7 @@ inline Sign orient2d(double ax, double ay, double bx, double by, double cx, doub
   const double my = detail::max_abs(uy, vy);
   const double det = ux * vy - uy * vx;
   const double bound = detail::kOrient2dBound * mx * my;
-  if (std::min(mx, my) >= detail::kFilterMin && std::max(mx, my) <= detail::kFilterMax) {
+  if (detail::in_filter_range(mx, my)) {
     if (det > bound) return Sign::Positive;
     if (det < -bound) return Sign::Negative;
   }

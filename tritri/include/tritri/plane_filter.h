@@ -148,7 +148,8 @@ inline Sign side_of_plane(const PlaneFilter& f, const std::array<double, 3>& a, 
 // every corner of each triangle against the other's plane first). orient3d(a, b, c, d)
 // whose a, b, c are the very objects (same addresses, same order) a triangle was
 // registered with uses that triangle's PlaneFilter; any other call is DoubleKernel's. The
-// answers are DoubleKernel's in every case (exact); only the cost differs. Models
+// same for orient3d_each. The answers are DoubleKernel's in every case (exact); only the
+// cost differs. Models
 // OrderedKernel. The registered points and filters must outlive the kernel.
 class PlaneCachedKernel : public DoubleKernel {
  public:
@@ -157,12 +158,28 @@ class PlaneCachedKernel : public DoubleKernel {
       : tri_{{a[0], a[1], a[2]}, {b[0], b[1], b[2]}}, plane_{&pa, &pb} {}
 
   Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d) const {
-    for (int t = 0; t < 2; ++t)
-      if (&a == tri_[t][0] && &b == tri_[t][1] && &c == tri_[t][2]) return side_of_plane(*plane_[t], a, b, c, d);
+    if (const PlaneFilter* f = registered(a, b, c)) return side_of_plane(*f, a, b, c, d);
     return DoubleKernel::orient3d(a, b, c, d);
+  }
+  // Overrides DoubleKernel's, which would bypass the cached planes.
+  void orient3d_each(const Point& a, const Point& b, const Point& c, const Point& d0, const Point& d1,
+                     const Point& d2, Sign (&s)[3]) const {
+    if (const PlaneFilter* f = registered(a, b, c)) {
+      s[0] = side_of_plane(*f, a, b, c, d0);
+      s[1] = side_of_plane(*f, a, b, c, d1);
+      s[2] = side_of_plane(*f, a, b, c, d2);
+      return;
+    }
+    DoubleKernel::orient3d_each(a, b, c, d0, d1, d2, s);
   }
 
  private:
+  const PlaneFilter* registered(const Point& a, const Point& b, const Point& c) const noexcept {
+    for (int t = 0; t < 2; ++t)
+      if (&a == tri_[t][0] && &b == tri_[t][1] && &c == tri_[t][2]) return plane_[t];
+    return nullptr;
+  }
+
   const Point* tri_[2][3];
   const PlaneFilter* plane_[2];
 };
