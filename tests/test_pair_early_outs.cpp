@@ -313,7 +313,8 @@ class ProbeKernel : public tritri::PlaneCachedKernel {
     for (const auto& t : tri_) *hits_ += &a == t[0] && &b == t[1] && &c == t[2];
     return PlaneCachedKernel::orient3d(a, b, c, d);
   }
-  void orient3d_each(const P&, const P&, const P&, const P&, const P&, const P&, Sign (&)[3]) const = delete;  // count each
+  // Deleted, so that classify's plane-side signs come through orient3d above, counted.
+  void orient3d_each(const P&, const P&, const P&, const P&, const P&, const P&, Sign (&)[3]) const = delete;
 
  private:
   const P* tri_[2][3];

@@ -33,6 +33,8 @@ struct DoubleKernel {
 
 static_assert(OrderedKernel<DoubleKernel>);
 // classify finds orient3d_each only if its signature matches the concept's exactly.
-static_assert(requires(const DoubleKernel::Point& p, Sign (&s)[3]) { DoubleKernel::orient3d_each(p, p, p, p, p, p, s); });
+static_assert(requires(const DoubleKernel::Point& p, Sign (&s)[3]) {
+  DoubleKernel::orient3d_each(p, p, p, p, p, p, s);
+});
 
 }  // namespace tritri

@@ -149,8 +149,8 @@ inline Sign side_of_plane(const PlaneFilter& f, const std::array<double, 3>& a, 
 // whose a, b, c are the very objects (same addresses, same order) a triangle was
 // registered with uses that triangle's PlaneFilter; any other call is DoubleKernel's. The
 // same for orient3d_each. The answers are DoubleKernel's in every case (exact); only the
-// cost differs. Models
-// OrderedKernel. The registered points and filters must outlive the kernel.
+// cost differs. Models OrderedKernel. The registered points and filters must outlive the
+// kernel.
 class PlaneCachedKernel : public DoubleKernel {
  public:
   PlaneCachedKernel(const Point* const (&a)[3], const PlaneFilter& pa, const Point* const (&b)[3],
