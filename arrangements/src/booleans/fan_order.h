@@ -1,17 +1,19 @@
 // arrangements/src/booleans/fan_order.h (internal to the Boolean stage)
 //
-// order_around_axis(a, b, r, c, items, reference_item, orient, opposite): sorts `items` (indices
-// into c) by the angle of c[i] around the line through a and b, measured from the
-// half-plane of r, increasing in the direction in which orient(a, b, c[i], c[j]) is
-// Positive for c[j] just after c[i]. Angle 0 is the item reference_item (whose point is
-// r; -1 when r is not an item), then the open half-turn where orient(a, b, r, c) > 0, the
-// half-plane opposite r (orient 0), then the other half-turn. opposite (optional, per
-// index of c): items known to lie in the half-plane opposite r (e.g. pieces of the
-// reference's own input triangle), placed there without an orient call: an exact zero is
-// the costliest case of a filtered predicate.
-// Precondition: no two items in one half-plane bounded by the line (the triangles of an
-// arrangement around an edge never overlap), none on the line.
-// Exact as orient is; O(k log k) orient calls for k items.
+// order_around_axis(items, reference_item, side, opposite): sorts `items` (indices of
+// half-planes bounded by one oriented line ab) by their angle around the line, measured
+// from a reference half-plane, increasing in the direction in which side(i, j) is Positive
+// for j just after i. side(i, j) is the sign of orient3d(a, b, p_i, p_j) for points p_i,
+// p_j of the half-planes i and j off the line; i is reference_item, an item, or -1 for
+// the reference when it is not an item (reference_item == -1). Angle 0 is the reference,
+// then the open half-turn where side(reference_item, i) > 0, the half-plane opposite the
+// reference (side 0), then the other half-turn. opposite (optional, per item): items known
+// to lie in the half-plane opposite the reference (e.g. pieces of the reference's own
+// input triangle), placed there without a side call: an exact zero is the costliest case
+// of a filtered predicate.
+// Precondition: no two items in one half-plane (the triangles of an arrangement around an
+// edge never overlap).
+// Exact as side is; O(k log k) side calls for k items.
 #pragma once
 
 #include <algorithm>
@@ -21,9 +23,9 @@
 
 namespace arrangements {
 
-template <class P, class Orient>
-void order_around_axis(const P& a, const P& b, const P& r, const std::vector<const P*>& c, std::vector<int>& items,
-                       int reference_item, Orient orient, const std::vector<char>* opposite = nullptr) {
+template <class Side>
+void order_around_axis(std::vector<int>& items, int reference_item, Side side,
+                       const std::vector<char>* opposite = nullptr) {
   // 0: the reference, 1: (0, pi), 2: pi, 3: (pi, 2 pi)
   std::vector<std::pair<int, int>> keyed;  // (class, item)
   keyed.reserve(items.size());
@@ -32,7 +34,7 @@ void order_around_axis(const P& a, const P& b, const P& r, const std::vector<con
     if (opposite && (*opposite)[i]) {
       cls = 2;
     } else if (i != reference_item) {
-      const tritri::Sign s = orient(a, b, r, *c[i]);
+      const tritri::Sign s = side(reference_item, i);
       cls = s == tritri::Sign::Positive ? 1 : s == tritri::Sign::Zero ? 2 : 3;
     }
     keyed.emplace_back(cls, i);
@@ -40,7 +42,7 @@ void order_around_axis(const P& a, const P& b, const P& r, const std::vector<con
   std::sort(keyed.begin(), keyed.end(), [&](const std::pair<int, int>& x, const std::pair<int, int>& y) {
     if (x.first != y.first) return x.first < y.first;
     if (x.second == y.second || x.first == 0 || x.first == 2) return false;
-    return orient(a, b, *c[x.second], *c[y.second]) == tritri::Sign::Positive;
+    return side(x.second, y.second) == tritri::Sign::Positive;
   });
   for (std::size_t k = 0; k < items.size(); ++k) items[k] = keyed[k].second;
 }

@@ -18,6 +18,82 @@
 
 namespace arrangements {
 
+namespace {
+
+// The TPIs of all pieces (a crossing of two constraints is also found by the triangles of
+// those constraints; a crossing can also be a point that classification made, e.g. where
+// an edge of one constraint's triangle lies in t's plane and meets the other constraint's
+// triangle), deduplicated exactly and looked up among the graph's points: id[i] is tpi[i]'s
+// graph point, or g.points.size() + k for fresh[k]. Everything in the model's order
+// (M::compare with each point's key computed once: most comparisons settle on the keys),
+// in which stage 4 already sorted the graph's new points; the lookups in parallel.
+template <class Point>
+struct TpiIds {
+  std::vector<Point> fresh;
+  std::vector<int> id;
+};
+
+template <class M>
+TpiIds<typename M::Point> tpi_ids(const BasicIntersectionGraph<typename M::Point>& g,
+                                  const std::vector<const typename M::Point*>& tpi) {
+  using Key = typename M::Key;
+  TpiIds<typename M::Point> out;
+  out.id.resize(tpi.size());
+  if (tpi.empty()) return out;
+  std::vector<Key> key(tpi.size());
+  tbb::parallel_for(std::size_t{0}, tpi.size(), [&](std::size_t i) { key[i] = M::key(*tpi[i]); });
+  auto tpi_compare = [&](int a, int b) { return M::compare(*tpi[a], key[a], *tpi[b], key[b]); };
+  std::vector<int> order(tpi.size());
+  std::iota(order.begin(), order.end(), 0);
+  tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
+    const int c = tpi_compare(a, b);
+    return c != 0 ? c < 0 : a < b;
+  });
+  std::vector<std::size_t> run;  // the first position in `order` of each distinct point
+  for (std::size_t i = 0; i < order.size(); ++i)
+    if (i == 0 || tpi_compare(order[i - 1], order[i]) != 0) run.push_back(i);
+  run.push_back(order.size());
+
+  // The graph's points in the same order: input vertices (sorted here) and new points.
+  std::vector<int> vertices(g.num_input_vertices);
+  std::iota(vertices.begin(), vertices.end(), 0);
+  std::vector<Key> vertex_key(vertices.size());
+  tbb::parallel_for(std::size_t{0}, vertices.size(), [&](std::size_t v) { vertex_key[v] = M::key(g.points[v]); });
+  tbb::parallel_sort(vertices.begin(), vertices.end(), [&](int a, int b) {
+    const int c = M::compare(g.points[a], vertex_key[a], g.points[b], vertex_key[b]);
+    return c != 0 ? c < 0 : a < b;
+  });
+  const std::vector<int>& lpis = g.new_points_sorted;
+  std::vector<Key> lpi_key(lpis.size());
+  tbb::parallel_for(std::size_t{0}, lpis.size(), [&](std::size_t k) { lpi_key[k] = M::key(g.points[lpis[k]]); });
+  std::vector<int> match(run.size() - 1, -1);
+  tbb::parallel_for(std::size_t{0}, match.size(), [&](std::size_t r) {
+    const int x = order[run[r]];
+    auto find = [&](const std::vector<int>& sorted, auto&& key_at) {
+      std::size_t lo = 0, hi = sorted.size();  // first position not before x
+      while (lo < hi) {
+        const std::size_t mid = (lo + hi) / 2;
+        if (M::compare(g.points[sorted[mid]], key_at(mid), *tpi[x], key[x]) < 0) lo = mid + 1;
+        else hi = mid;
+      }
+      return lo < sorted.size() && M::compare(g.points[sorted[lo]], key_at(lo), *tpi[x], key[x]) == 0 ? sorted[lo] : -1;
+    };
+    match[r] = find(vertices, [&](std::size_t i) -> const Key& { return vertex_key[vertices[i]]; });
+    if (match[r] < 0) match[r] = find(lpis, [&](std::size_t k) -> const Key& { return lpi_key[k]; });
+  });
+  for (std::size_t r = 0; r + 1 < run.size(); ++r) {
+    int id = match[r];
+    if (id < 0) {
+      id = static_cast<int>(g.points.size() + out.fresh.size());
+      out.fresh.push_back(*tpi[order[run[r]]]);
+    }
+    for (std::size_t i = run[r]; i < run[r + 1]; ++i) out.id[order[i]] = id;
+  }
+  return out;
+}
+
+}  // namespace
+
 template <class M>
 BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename M::Vertex>& soup,
                                                const BasicIntersectionGraph<typename M::Point>& g, int scale_exponent,
@@ -52,57 +128,14 @@ BasicOutputMesh<typename M::Point> triangulate(const BasicTriangleSoup<typename 
     if (busy[t] && !done[t]) pieces[t] = split_triangle_of<M>(soup, g, static_cast<int>(t));
   });
 
-  // New TPIs, deduplicated exactly over all triangles (a crossing of two constraints is
-  // also found by the triangles of those constraints); ids in exact lexicographic order.
-  std::vector<Point> new_tpis;  // ids g.points.size() + k
   std::vector<std::size_t> tpi_offset(nF + 1, 0);
   for (std::size_t t = 0; t < nF; ++t) tpi_offset[t + 1] = tpi_offset[t] + pieces[t].tpis.size();
   std::vector<const Point*> tpi(tpi_offset[nF]);
   for (std::size_t t = 0; t < nF; ++t)
     for (std::size_t k = 0; k < pieces[t].tpis.size(); ++k) tpi[tpi_offset[t] + k] = &pieces[t].tpis[k];
-  std::vector<int> order(tpi.size());
-  std::iota(order.begin(), order.end(), 0);
-  tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
-    const int c = M::compare_xyz(*tpi[a], *tpi[b]);
-    return c != 0 ? c < 0 : a < b;
-  });
-  // A crossing can also be a point that classification made (e.g. where an edge of one
-  // constraint's triangle lies in t's plane and meets the other constraint's triangle):
-  // look TPIs up among the graph's points, explicit vertices and LPIs sorted separately.
-  std::vector<int> explicit_sorted;
-  const std::vector<int>& lpi_sorted = g.new_points_sorted;  // sorted by stage 4
-  if (!tpi.empty()) {
-    explicit_sorted.resize(g.num_input_vertices);
-    std::iota(explicit_sorted.begin(), explicit_sorted.end(), 0);
-    tbb::parallel_sort(explicit_sorted.begin(), explicit_sorted.end(),
-                       [&](int a, int b) { return M::vertex_less(soup.vertices[a], soup.vertices[b]); });
-  }
-  auto existing = [&](const Point& x) {
-    // Input vertices in xyz order; new points in the graph's order (M::compare).
-    auto it = std::lower_bound(explicit_sorted.begin(), explicit_sorted.end(), 0,
-                               [&](int id, int) { return M::compare_xyz(g.points[id], x) < 0; });
-    if (it != explicit_sorted.end() && M::compare_xyz(g.points[*it], x) == 0) return *it;
-    const typename M::Key bx = M::key(x);
-    auto along = [&](int id) { return M::compare(g.points[id], M::key(g.points[id]), x, bx); };
-    const auto at =
-        std::lower_bound(lpi_sorted.begin(), lpi_sorted.end(), 0, [&](int id, int) { return along(id) < 0; });
-    if (at != lpi_sorted.end() && along(*at) == 0) return *at;
-    return -1;
-  };
-  std::vector<int> tpi_id(tpi.size());
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    if (i == 0 || M::compare_xyz(*tpi[order[i - 1]], *tpi[order[i]]) != 0) {
-      const int id = existing(*tpi[order[i]]);
-      if (id >= 0) {
-        tpi_id[order[i]] = id;
-        continue;
-      }
-      new_tpis.push_back(*tpi[order[i]]);
-    }
-    tpi_id[order[i]] = i > 0 && M::compare_xyz(*tpi[order[i - 1]], *tpi[order[i]]) == 0
-                           ? tpi_id[order[i - 1]]
-                           : static_cast<int>(g.points.size() + new_tpis.size()) - 1;
-  }
+  const TpiIds<Point> ids = tpi_ids<M>(g, tpi);
+  const std::vector<int>& tpi_id = ids.id;
+  const std::vector<Point>& new_tpis = ids.fresh;
   info.new_tpi = new_tpis.size();
 
   // Output in soup-triangle order; points renumbered in first-use order. Three passes, so

@@ -22,8 +22,9 @@
 //                   compared exactly): the stats key `tpi`
 //   emitted_by, cover_of, covers   with keep_covers only (see TriangulationInfo)
 //   output_vertex   per graph point id, then per new TPI (ids graph.points.size() + k, in
-//                   exact lexicographic order): its index in the mesh's vertices, -1 if no
-//                   output triangle uses it (for checks that follow graph ids into the mesh)
+//                   the model's exact order, M::compare): its index in the mesh's vertices,
+//                   -1 if no output triangle uses it (for checks that follow graph ids into
+//                   the mesh)
 // Exactness: see 5_triangulate_triangle.h; points are never rounded here.
 // Output does not depend on the number of threads.
 // Cost: the per-triangle triangulations, parallel over triangles (TBB), or one per

@@ -21,7 +21,7 @@ void boolean_stage(BasicOutputMesh<typename M::Point>& mesh, const BasicTriangle
     for (std::uint32_t l : s) operands = std::max(operands, static_cast<int>(l) + 1);
   const OperandWeights weights = soup_weights(kept_as, input.label_set, input.label_sets, soup.triangles.size());
   const OperandWeights deltas = output_deltas<M>(soup, weights, info.emitted_by, info.cover_of, info.covers);
-  const SideCells sides = side_cells<M>(mesh, deltas);
+  const SideCells sides = side_cells<M>(mesh, deltas, soup, info.emitted_by, scale_exponent);
   const CellWindings windings = cell_windings<M>(mesh, sides, deltas, soup, weights, operands, scale_exponent);
   stats.winding_cells = static_cast<std::size_t>(sides.cells);
   stats.winding_components = windings.components;

@@ -2,9 +2,9 @@
 // (see 6_side_cells.h).
 #include "stages/6_side_cells.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/concurrent_vector.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -28,77 +28,137 @@ std::string point_text(const Vec3& p) {
   return buf;
 }
 
+// Half-edges (key: the undirected edge a * nV + b, a < b; value: 3 f + k) in (key, value)
+// order, with the start of each run of one key (one edge's fan) and the end. A counting
+// sort by the smaller endpoint, then each vertex's few half-edges sorted: the order one
+// global sort gives, in linear time (the global sort was a quarter of this stage).
+struct EdgeFans {
+  std::vector<std::pair<std::uint64_t, int>> half;
+  std::vector<std::size_t> run_start;
+};
+
+EdgeFans edge_fans(const std::vector<Tri>& triangles, std::uint64_t nV) {
+  EdgeFans out;
+  std::vector<std::size_t> bucket(nV + 1, 0);
+  for (const Tri& t : triangles)
+    for (int k = 0; k < 3; ++k) ++bucket[static_cast<std::size_t>(std::min(t[k], t[(k + 1) % 3])) + 1];
+  for (std::size_t v = 0; v < nV; ++v) bucket[v + 1] += bucket[v];
+  out.half.resize(3 * triangles.size());
+  {
+    std::vector<std::size_t> next(bucket.begin(), bucket.end() - 1);
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+      const Tri& t = triangles[f];
+      for (int k = 0; k < 3; ++k) {
+        const std::uint64_t a = t[k], b = t[(k + 1) % 3];
+        out.half[next[std::min(a, b)]++] = {std::min(a, b) * nV + std::max(a, b), static_cast<int>(3 * f + k)};
+      }
+    }
+  }
+  tbb::parallel_for(std::size_t{0}, static_cast<std::size_t>(nV), [&](std::size_t v) {
+    std::sort(out.half.begin() + static_cast<std::ptrdiff_t>(bucket[v]),
+              out.half.begin() + static_cast<std::ptrdiff_t>(bucket[v + 1]));
+  });
+  for (std::size_t i = 0; i < out.half.size(); ++i)
+    if (i == 0 || out.half[i].first != out.half[i - 1].first) out.run_start.push_back(i);
+  out.run_start.push_back(out.half.size());
+  return out;
+}
+
+// Whether the jumps of triangles f and g cancel around an edge that both run the same way
+// (same_way) or opposite ways: rows are sorted by operand, without zeros.
+bool jumps_cancel(const OperandWeights& deltas, int f, int g, bool same_way) {
+  const auto *p = deltas.row_begin(f), *pe = deltas.row_end(f), *q = deltas.row_begin(g);
+  if (pe - p != deltas.row_end(g) - q) return false;
+  for (; p != pe; ++p, ++q)
+    if (p->first != q->first || p->second != (same_way ? -q->second : q->second)) return false;
+  return true;
+}
+
 }  // namespace
 
 template <class M>
-SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const OperandWeights& deltas) {
+SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const OperandWeights& deltas,
+                     const BasicTriangleSoup<typename M::Vertex>& soup, const std::vector<int>& emitted_by,
+                     int scale_exponent) {
   using Point = typename M::Point;
+  // The corners of soup triangle t's plane, in the mesh's frame (exact: see M::unscaled).
+  auto corner = [&](int t, int k) {
+    const Point p = M::explicit_point(soup.vertices[soup.triangles[t][k]]);
+    return scale_exponent == 0 ? p : M::unscaled(p, scale_exponent);
+  };
   const std::size_t nT = mesh.triangles.size();
   const std::uint64_t nV = mesh.vertices.size();
-  // Half-edges keyed by their undirected edge; each run of equal keys is one edge's fan.
-  std::vector<std::pair<std::uint64_t, int>> half(3 * nT);
-  tbb::parallel_for(std::size_t{0}, nT, [&](std::size_t f) {
-    detail::memory_checkpoint();
-    const Tri& t = mesh.triangles[f];
-    for (int k = 0; k < 3; ++k) {
-      const std::uint64_t a = t[k], b = t[(k + 1) % 3];
-      half[3 * f + k] = {std::min(a, b) * nV + std::max(a, b), static_cast<int>(3 * f + k)};
-    }
-  });
-  tbb::parallel_sort(half.begin(), half.end());
-  std::vector<std::size_t> run_start;
-  for (std::size_t i = 0; i < half.size(); ++i)
-    if (i == 0 || half[i].first != half[i - 1].first) run_start.push_back(i);
-  run_start.push_back(half.size());
+  EdgeFans fans = edge_fans(mesh.triangles, nV);
+  const auto& half = fans.half;
+  const auto& run_start = fans.run_start;
   const std::size_t runs = run_start.size() - 1;
 
   // Per run: the balance check, then one pair of sides to unite per wedge.
   std::vector<std::pair<int, int>> unite(half.size());
   tbb::concurrent_vector<std::pair<std::size_t, int>> unbalanced;  // (run, operand)
-  tbb::parallel_for(std::size_t{0}, runs, [&](std::size_t r) {
-    const std::size_t s = run_start[r], e = run_start[r + 1];
-    const int a = static_cast<int>(half[s].first / nV);  // the smaller endpoint
-    const int b = static_cast<int>(half[s].first % nV);
-    auto face = [&](std::size_t i) { return half[i].second / 3; };
-    // +1 when the triangle runs a -> b along the edge
-    auto forward = [&](std::size_t i) { return mesh.triangles[face(i)][half[i].second % 3] == a; };
-    std::vector<std::pair<int, int>> sum;
-    for (std::size_t i = s; i < e; ++i)
-      for (auto it = deltas.row_begin(face(i)); it != deltas.row_end(face(i)); ++it)
-        sum.emplace_back(it->first, forward(i) ? it->second : -it->second);
-    std::sort(sum.begin(), sum.end());
-    for (std::size_t i = 0; i < sum.size();) {
-      std::size_t j = i;
-      int total = 0;
-      for (; j < sum.size() && sum[j].first == sum[i].first; ++j) total += sum[j].second;
-      if (total != 0) unbalanced.push_back({r, sum[i].first});
-      i = j;
-    }
-    std::vector<int> order(e - s);
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-    if (order.size() > 2) {
-      std::vector<const Point*> third(order.size());
-      for (std::size_t i = 0; i < order.size(); ++i) {
-        const Tri& t = mesh.triangles[face(s + i)];
-        const int k = half[s + i].second % 3;
-        third[i] = &mesh.vertices[t[(k + 2) % 3]];
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, runs), [&](const tbb::blocked_range<std::size_t>& range) {
+    detail::memory_checkpoint();
+    std::vector<std::pair<int, int>> sum;  // reused by the runs of this range
+    std::vector<int> order;
+    std::vector<const Point*> third;
+    std::vector<char> opposite;
+    for (std::size_t r = range.begin(); r != range.end(); ++r) {
+      const std::size_t s = run_start[r], e = run_start[r + 1];
+      const int a = static_cast<int>(half[s].first / nV);  // the smaller endpoint
+      auto face = [&](std::size_t i) { return half[i].second / 3; };
+      // +1 when the triangle runs a -> b along the edge
+      auto forward = [&](std::size_t i) { return mesh.triangles[face(i)][half[i].second % 3] == a; };
+      // The wedge after triangle j (by angle) is faced by j's side towards increasing angle
+      // (front if it runs a -> b) and by the next triangle's side towards decreasing angle.
+      auto unite_wedge = [&](std::size_t slot, std::size_t x, std::size_t y) {
+        unite[slot] = {2 * face(x) + (forward(x) ? 0 : 1), 2 * face(y) + (forward(y) ? 1 : 0)};
+      };
+      // Most edges have two triangles (inside a cut triangle or a clean surface): no sums to
+      // sort, no order to find.
+      if (e - s == 2 && jumps_cancel(deltas, face(s), face(s + 1), forward(s) == forward(s + 1))) {
+        unite_wedge(s, s, s + 1);
+        unite_wedge(s + 1, s + 1, s);
+        continue;
       }
-      // Pieces of the reference's own input triangle lie in its plane, across the edge.
-      std::vector<char> opposite(order.size(), 0);
-      for (std::size_t i = 1; i < order.size(); ++i)
-        opposite[i] = mesh.source[face(s + i)] == mesh.source[face(s)];
-      order_around_axis(
-          mesh.vertices[a], mesh.vertices[b], *third[0], third, order, 0,
-          [](const Point& p, const Point& q, const Point& x, const Point& y) { return orient3d_points(p, q, x, y); },
-          &opposite);
-    }
-    // The wedge after triangle j (by angle) is faced by j's side towards increasing angle
-    // (front if it runs a -> b) and by the next triangle's side towards decreasing angle.
-    for (std::size_t j = 0; j < order.size(); ++j) {
-      const std::size_t x = s + order[j], y = s + order[(j + 1) % order.size()];
-      const int side_x = 2 * face(x) + (forward(x) ? 0 : 1);
-      const int side_y = 2 * face(y) + (forward(y) ? 1 : 0);
-      unite[s + j] = {side_x, side_y};
+      sum.clear();
+      for (std::size_t i = s; i < e; ++i)
+        for (auto it = deltas.row_begin(face(i)); it != deltas.row_end(face(i)); ++it)
+          sum.emplace_back(it->first, forward(i) ? it->second : -it->second);
+      std::sort(sum.begin(), sum.end());
+      for (std::size_t i = 0; i < sum.size();) {
+        std::size_t j = i;
+        int total = 0;
+        for (; j < sum.size() && sum[j].first == sum[i].first; ++j) total += sum[j].second;
+        if (total != 0) unbalanced.push_back({r, sum[i].first});
+        i = j;
+      }
+      order.resize(e - s);
+      for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+      if (order.size() > 2) {
+        third.resize(order.size());
+        for (std::size_t i = 0; i < order.size(); ++i) {
+          const Tri& t = mesh.triangles[face(s + i)];
+          const int k = half[s + i].second % 3;
+          third[i] = &mesh.vertices[t[(k + 2) % 3]];
+        }
+        // Pieces of the reference's own input triangle lie in its plane, across the edge.
+        opposite.assign(order.size(), 0);
+        for (std::size_t i = 1; i < order.size(); ++i)
+          opposite[i] = mesh.source[face(s + i)] == mesh.source[face(s)];
+        // orient3d(a, b, third x, third y): the plane through a, b and x's third corner is
+        // the plane of the soup triangle that emitted x, whose orientation x keeps (the
+        // same normal when x runs a -> b, else the opposite). Three explicit corners: far
+        // cheaper than orient3d on the implicit a, b and x's corner (degree 6 against up
+        // to 15; this was most of the stage on meshes with many crossings).
+        auto side = [&](int x, int y) {
+          const int t = emitted_by[face(s + x)];
+          const tritri::Sign sign = orient3d_points(corner(t, 0), corner(t, 1), corner(t, 2), *third[y]);
+          return forward(s + x) ? sign : -sign;
+        };
+        order_around_axis(order, 0, side, &opposite);
+      }
+      for (std::size_t j = 0; j < order.size(); ++j)
+        unite_wedge(s + j, s + order[j], s + order[(j + 1) % order.size()]);
     }
   });
   if (!unbalanced.empty()) {
@@ -119,7 +179,7 @@ SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const Opera
     error.open_edges = count;
     throw error;
   }
-  half = {};
+  fans = {};
   UnionFind sets(2 * nT);
   for (const auto& [x, y] : unite) sets.unite(x, y);
   SideCells out;
@@ -133,7 +193,10 @@ SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const Opera
   return out;
 }
 
-template SideCells side_cells<DoubleModel>(const OutputMesh&, const OperandWeights&);
-template SideCells side_cells<ExactModel>(const BasicOutputMesh<ExactModel::Point>&, const OperandWeights&);
+template SideCells side_cells<DoubleModel>(const OutputMesh&, const OperandWeights&, const TriangleSoup&,
+                                           const std::vector<int>&, int);
+template SideCells side_cells<ExactModel>(const BasicOutputMesh<ExactModel::Point>&, const OperandWeights&,
+                                          const BasicTriangleSoup<ExactModel::Vertex>&, const std::vector<int>&,
+                                          int);
 
 }  // namespace arrangements

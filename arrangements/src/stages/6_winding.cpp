@@ -69,10 +69,9 @@ RayStart ray_start(const BasicOutputMesh<typename M::Point>& mesh, int v, const 
   beyond[0] += 1;
   std::vector<int> order(fan.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  order_around_axis(V, exact_of(best), beyond, third, order, -1,
-                    [](const ExactVec3& p, const ExactVec3& q, const ExactVec3& x, const ExactVec3& y) {
-                      return orient3d_points(p, q, x, y);
-                    });
+  order_around_axis(order, -1, [&](int i, int j) {
+    return orient3d_points(V, exact_of(best), i < 0 ? beyond : *third[i], *third[j]);
+  });
   // The first triangle after +x faces it with its side towards decreasing angle.
   const int first = order.front();
   ExactVec3 mid = V;

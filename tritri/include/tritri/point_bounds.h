@@ -164,6 +164,8 @@ inline int compare_along_direction(const ImplicitPoint& p, const XBounds& bp, co
                                    const XBounds& bq) {
   if (bp.hi < bq.lo) return -1;
   if (bq.hi < bp.lo) return 1;
+  // One point found by several triangles (a TPI of one set of planes): no arithmetic.
+  if (detail::same_point_by_construction(p, q)) return 0;
   const auto& d = kSortDirection;
   auto numerator_and_w = [&](const ImplicitPoint& a) {
     if (a.is_explicit()) {
