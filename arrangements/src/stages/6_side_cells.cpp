@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -28,16 +29,47 @@ std::string point_text(const Vec3& p) {
   return buf;
 }
 
-// Half-edges (key: the undirected edge a * nV + b, a < b; value: 3 f + k) in (key, value)
-// order, with the start of each run of one key (one edge's fan) and the end. A counting
-// sort by the smaller endpoint, then each vertex's few half-edges sorted: the order one
-// global sort gives, in linear time (the global sort was a quarter of this stage).
+// One triangle's use of an edge of the arrangement, with what the edge's fan needs of it
+// (gathered in one pass over the triangles: the fans then read one contiguous array instead
+// of the triangles, their corners and jumps at random).
+struct HalfEdge {
+  std::uint64_t key;   // the undirected edge a * nV + b, a < b
+  int value;           // 3 f + k: triangle f's edge from corner k to corner k + 1
+  std::uint32_t jump;  // bit 0: runs a -> b; bits 1-8: its one jump signed by that direction,
+                       // plus 128 (0: none or several, see deltas); bits 9-31: its operand
+};
+
+constexpr std::uint32_t kForward = 1;
+constexpr int kJumpShift = 1, kOperandShift = 9;
+
+std::uint32_t packed_jump(const OperandWeights& deltas, std::size_t f, bool forward) {
+  const auto *p = deltas.row_begin(f), *pe = deltas.row_end(f);
+  const std::uint32_t dir = forward ? kForward : 0;
+  if (pe - p != 1 || p->first < 0 || p->first >= (1 << (32 - kOperandShift)) || p->second < -127 || p->second > 127)
+    return dir;
+  const int signed_jump = forward ? p->second : -p->second;
+  return dir | static_cast<std::uint32_t>(signed_jump + 128) << kJumpShift |
+         static_cast<std::uint32_t>(p->first) << kOperandShift;
+}
+
+// Whether two packed jumps cancel (one operand, opposite signed jumps); nullopt when either
+// is not packed.
+std::optional<bool> packed_jumps_cancel(std::uint32_t x, std::uint32_t y) {
+  const std::uint32_t jx = (x >> kJumpShift) & 0xff, jy = (y >> kJumpShift) & 0xff;
+  if (jx == 0 || jy == 0) return std::nullopt;
+  return (x >> kOperandShift) == (y >> kOperandShift) && jx + jy == 256;
+}
+
+// Half-edges in (key, value) order, with the start of each run of one key (one edge's fan)
+// and the end. A counting sort by the smaller endpoint, then each vertex's few half-edges
+// sorted: the order one global sort gives, in linear time (the global sort was a quarter
+// of this stage).
 struct EdgeFans {
-  std::vector<std::pair<std::uint64_t, int>> half;
+  std::vector<HalfEdge> half;
   std::vector<std::size_t> run_start;
 };
 
-EdgeFans edge_fans(const std::vector<Tri>& triangles, std::uint64_t nV) {
+EdgeFans edge_fans(const std::vector<Tri>& triangles, std::uint64_t nV, const OperandWeights& deltas) {
   EdgeFans out;
   std::vector<std::size_t> bucket(nV + 1, 0);
   for (const Tri& t : triangles)
@@ -50,16 +82,18 @@ EdgeFans edge_fans(const std::vector<Tri>& triangles, std::uint64_t nV) {
       const Tri& t = triangles[f];
       for (int k = 0; k < 3; ++k) {
         const std::uint64_t a = t[k], b = t[(k + 1) % 3];
-        out.half[next[std::min(a, b)]++] = {std::min(a, b) * nV + std::max(a, b), static_cast<int>(3 * f + k)};
+        out.half[next[std::min(a, b)]++] = {std::min(a, b) * nV + std::max(a, b), static_cast<int>(3 * f + k),
+                                            packed_jump(deltas, f, a < b)};
       }
     }
   }
   tbb::parallel_for(std::size_t{0}, static_cast<std::size_t>(nV), [&](std::size_t v) {
     std::sort(out.half.begin() + static_cast<std::ptrdiff_t>(bucket[v]),
-              out.half.begin() + static_cast<std::ptrdiff_t>(bucket[v + 1]));
+              out.half.begin() + static_cast<std::ptrdiff_t>(bucket[v + 1]),
+              [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.value < y.value; });
   });
   for (std::size_t i = 0; i < out.half.size(); ++i)
-    if (i == 0 || out.half[i].first != out.half[i - 1].first) out.run_start.push_back(i);
+    if (i == 0 || out.half[i].key != out.half[i - 1].key) out.run_start.push_back(i);
   out.run_start.push_back(out.half.size());
   return out;
 }
@@ -88,7 +122,7 @@ SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const Opera
   };
   const std::size_t nT = mesh.triangles.size();
   const std::uint64_t nV = mesh.vertices.size();
-  EdgeFans fans = edge_fans(mesh.triangles, nV);
+  EdgeFans fans = edge_fans(mesh.triangles, nV, deltas);
   const auto& half = fans.half;
   const auto& run_start = fans.run_start;
   const std::size_t runs = run_start.size() - 1;
@@ -104,10 +138,9 @@ SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const Opera
     std::vector<char> opposite;
     for (std::size_t r = range.begin(); r != range.end(); ++r) {
       const std::size_t s = run_start[r], e = run_start[r + 1];
-      const int a = static_cast<int>(half[s].first / nV);  // the smaller endpoint
-      auto face = [&](std::size_t i) { return half[i].second / 3; };
-      // +1 when the triangle runs a -> b along the edge
-      auto forward = [&](std::size_t i) { return mesh.triangles[face(i)][half[i].second % 3] == a; };
+      auto face = [&](std::size_t i) { return half[i].value / 3; };
+      // Whether the triangle runs a -> b along the edge (a the smaller endpoint).
+      auto forward = [&](std::size_t i) { return (half[i].jump & kForward) != 0; };
       // The wedge after triangle j (by angle) is faced by j's side towards increasing angle
       // (front if it runs a -> b) and by the next triangle's side towards decreasing angle.
       auto unite_wedge = [&](std::size_t slot, std::size_t x, std::size_t y) {
@@ -115,10 +148,13 @@ SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const Opera
       };
       // Most edges have two triangles (inside a cut triangle or a clean surface): no sums to
       // sort, no order to find.
-      if (e - s == 2 && jumps_cancel(deltas, face(s), face(s + 1), forward(s) == forward(s + 1))) {
-        unite_wedge(s, s, s + 1);
-        unite_wedge(s + 1, s + 1, s);
-        continue;
+      if (e - s == 2) {
+        const std::optional<bool> packed = packed_jumps_cancel(half[s].jump, half[s + 1].jump);
+        if (packed ? *packed : jumps_cancel(deltas, face(s), face(s + 1), forward(s) == forward(s + 1))) {
+          unite_wedge(s, s, s + 1);
+          unite_wedge(s + 1, s + 1, s);
+          continue;
+        }
       }
       sum.clear();
       for (std::size_t i = s; i < e; ++i)
@@ -138,7 +174,7 @@ SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const Opera
         third.resize(order.size());
         for (std::size_t i = 0; i < order.size(); ++i) {
           const Tri& t = mesh.triangles[face(s + i)];
-          const int k = half[s + i].second % 3;
+          const int k = half[s + i].value % 3;
           third[i] = &mesh.vertices[t[(k + 2) % 3]];
         }
         // Pieces of the reference's own input triangle lie in its plane, across the edge.
@@ -168,7 +204,7 @@ SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const Opera
     });
     std::size_t count = 0;
     for (const auto& x : u) count += x.second == u[0].second;
-    const std::uint64_t key = half[run_start[u[0].first]].first;
+    const std::uint64_t key = half[run_start[u[0].first]].key;
     const std::string edge = point_text(M::to_double(mesh.vertices[key / nV])) + " - " +
                              point_text(M::to_double(mesh.vertices[key % nV]));
     OpenOperandError error("operand " + std::to_string(u[0].second) + " is not closed: " + std::to_string(count) +
