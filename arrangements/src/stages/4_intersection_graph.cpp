@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <numeric>
 #include <type_traits>
 
 #include <tritri/implicit_point.h>
@@ -17,6 +16,7 @@
 #include "models/exact_model.h"
 #include "stages/4_share_coplanar.h"
 #include "support/append_points.h"
+#include "support/model_order.h"
 #include "support/sort_unique.h"
 
 namespace arrangements {
@@ -188,15 +188,10 @@ BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::ve
   // of structured inputs rarely tie along it; certified intervals settle almost every
   // comparison); each run of equal points is represented by its smallest key index
   // (deterministic).
-  std::vector<Key> db(keys.size());
-  tbb::parallel_for(std::size_t{0}, keys.size(), [&](std::size_t i) { db[i] = M::key(lpis[i]); });
+  std::vector<Key> db;
+  const std::vector<int> order =
+      ids_in_model_order<M>(keys.size(), [&](std::size_t i) -> const Point& { return lpis[i]; }, db);
   auto compare = [&](int a, int b) { return M::compare(lpis[a], db[a], lpis[b], db[b]); };
-  std::vector<int> order(keys.size());
-  std::iota(order.begin(), order.end(), 0);
-  tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
-    const int c = compare(a, b);
-    return c != 0 ? c < 0 : a < b;
-  });
   // Runs of equal points from the comparisons of neighbours in the order (in parallel; an
   // exact total order makes equality transitive).
   std::vector<char> same_as_previous(order.size(), 0);
@@ -222,16 +217,9 @@ BasicIntersectionGraph<typename M::Point> build_intersection_graph(const std::ve
   append_points(g.points, V.size(), [&](std::size_t v) { return M::explicit_point(V[v]); });
   std::vector<int> by_position;
   std::vector<Key> vb;
-  if (!keys.empty()) {
-    vb.resize(V.size());
-    tbb::parallel_for(std::size_t{0}, V.size(), [&](std::size_t v) { vb[v] = M::key(g.points[v]); });
-    by_position.resize(V.size());
-    std::iota(by_position.begin(), by_position.end(), 0);
-    tbb::parallel_sort(by_position.begin(), by_position.end(), [&](int a, int b) {
-      const int c = M::compare(g.points[a], vb[a], g.points[b], vb[b]);
-      return c != 0 ? c < 0 : a < b;  // (preprocessing merged equal vertices; deterministic anyway)
-    });
-  }
+  if (!keys.empty())
+    by_position =
+        ids_in_model_order<M>(V.size(), [&](std::size_t v) -> const Point& { return g.points[v]; }, vb);
   // Both sequences in one order: a merge finds every match. In parallel, by pieces of
   // `order`, each merged from the first vertex not before its first point.
   std::vector<int> vertex_match(keys.size(), -1);

@@ -1,12 +1,10 @@
 #include "stages/5_triangulate.h"
 
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <numeric>
 
 #include "arrangements/memory_budget.h"
 #include "models/double_model.h"
@@ -14,6 +12,7 @@
 #include "stages/5_triangulate_cluster.h"
 #include "stages/5_triangulate_triangle.h"
 #include "support/append_points.h"
+#include "support/model_order.h"
 #include "support/label_set_table.h"
 
 namespace arrangements {
@@ -40,29 +39,19 @@ TpiIds<typename M::Point> tpi_ids(const BasicIntersectionGraph<typename M::Point
   TpiIds<typename M::Point> out;
   out.id.resize(tpi.size());
   if (tpi.empty()) return out;
-  std::vector<Key> key(tpi.size());
-  tbb::parallel_for(std::size_t{0}, tpi.size(), [&](std::size_t i) { key[i] = M::key(*tpi[i]); });
+  std::vector<Key> key;
+  const std::vector<int> order = ids_in_model_order<M>(
+      tpi.size(), [&](std::size_t i) -> const typename M::Point& { return *tpi[i]; }, key);
   auto tpi_compare = [&](int a, int b) { return M::compare(*tpi[a], key[a], *tpi[b], key[b]); };
-  std::vector<int> order(tpi.size());
-  std::iota(order.begin(), order.end(), 0);
-  tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
-    const int c = tpi_compare(a, b);
-    return c != 0 ? c < 0 : a < b;
-  });
   std::vector<std::size_t> run;  // the first position in `order` of each distinct point
   for (std::size_t i = 0; i < order.size(); ++i)
     if (i == 0 || tpi_compare(order[i - 1], order[i]) != 0) run.push_back(i);
   run.push_back(order.size());
 
   // The graph's points in the same order: input vertices (sorted here) and new points.
-  std::vector<int> vertices(g.num_input_vertices);
-  std::iota(vertices.begin(), vertices.end(), 0);
-  std::vector<Key> vertex_key(vertices.size());
-  tbb::parallel_for(std::size_t{0}, vertices.size(), [&](std::size_t v) { vertex_key[v] = M::key(g.points[v]); });
-  tbb::parallel_sort(vertices.begin(), vertices.end(), [&](int a, int b) {
-    const int c = M::compare(g.points[a], vertex_key[a], g.points[b], vertex_key[b]);
-    return c != 0 ? c < 0 : a < b;
-  });
+  std::vector<Key> vertex_key;
+  const std::vector<int> vertices = ids_in_model_order<M>(
+      g.num_input_vertices, [&](std::size_t v) -> const typename M::Point& { return g.points[v]; }, vertex_key);
   const std::vector<int>& lpis = g.new_points_sorted;
   std::vector<Key> lpi_key(lpis.size());
   tbb::parallel_for(std::size_t{0}, lpis.size(), [&](std::size_t k) { lpi_key[k] = M::key(g.points[lpis[k]]); });

@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -34,9 +35,10 @@ std::string point_text(const Vec3& p) {
 // of the triangles, their corners and jumps at random).
 struct HalfEdge {
   std::uint64_t key;   // the undirected edge a * nV + b, a < b
-  int value;           // 3 f + k: triangle f's edge from corner k to corner k + 1
-  std::uint32_t jump;  // bit 0: runs a -> b; bits 1-8: its one jump signed by that direction,
-                       // plus 128 (0: none or several, see deltas); bits 9-31: its operand
+  int edge_slot;          // 3 f + k: triangle f's edge from corner k to corner k + 1
+  std::uint32_t packed;   // bit 0: runs a -> b; bits 1-8: its one jump signed by that
+                          // direction, plus 128 (0: none, several, an operand >= 2^23 or a
+                          // jump beyond +-127: see deltas); bits 9-31: its operand
 };
 
 constexpr std::uint32_t kForward = 1;
@@ -79,6 +81,7 @@ EdgeFans edge_fans(const std::vector<Tri>& triangles, std::uint64_t nV, const Op
   {
     std::vector<std::size_t> next(bucket.begin(), bucket.end() - 1);
     for (std::size_t f = 0; f < triangles.size(); ++f) {
+      detail::memory_checkpoint();
       const Tri& t = triangles[f];
       for (int k = 0; k < 3; ++k) {
         const std::uint64_t a = t[k], b = t[(k + 1) % 3];
@@ -90,7 +93,7 @@ EdgeFans edge_fans(const std::vector<Tri>& triangles, std::uint64_t nV, const Op
   tbb::parallel_for(std::size_t{0}, static_cast<std::size_t>(nV), [&](std::size_t v) {
     std::sort(out.half.begin() + static_cast<std::ptrdiff_t>(bucket[v]),
               out.half.begin() + static_cast<std::ptrdiff_t>(bucket[v + 1]),
-              [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.value < y.value; });
+              [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.edge_slot < y.edge_slot; });
   });
   for (std::size_t i = 0; i < out.half.size(); ++i)
     if (i == 0 || out.half[i].key != out.half[i - 1].key) out.run_start.push_back(i);
@@ -136,11 +139,12 @@ SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const Opera
     std::vector<int> order;
     std::vector<const Point*> third;
     std::vector<char> opposite;
+    std::vector<std::array<Point, 3>> plane;  // per item, the corners of its emitting plane
     for (std::size_t r = range.begin(); r != range.end(); ++r) {
       const std::size_t s = run_start[r], e = run_start[r + 1];
-      auto face = [&](std::size_t i) { return half[i].value / 3; };
+      auto face = [&](std::size_t i) { return half[i].edge_slot / 3; };
       // Whether the triangle runs a -> b along the edge (a the smaller endpoint).
-      auto forward = [&](std::size_t i) { return (half[i].jump & kForward) != 0; };
+      auto forward = [&](std::size_t i) { return (half[i].packed & kForward) != 0; };
       // The wedge after triangle j (by angle) is faced by j's side towards increasing angle
       // (front if it runs a -> b) and by the next triangle's side towards decreasing angle.
       auto unite_wedge = [&](std::size_t slot, std::size_t x, std::size_t y) {
@@ -149,7 +153,7 @@ SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const Opera
       // Most edges have two triangles (inside a cut triangle or a clean surface): no sums to
       // sort, no order to find.
       if (e - s == 2) {
-        const std::optional<bool> packed = packed_jumps_cancel(half[s].jump, half[s + 1].jump);
+        const std::optional<bool> packed = packed_jumps_cancel(half[s].packed, half[s + 1].packed);
         if (packed ? *packed : jumps_cancel(deltas, face(s), face(s + 1), forward(s) == forward(s + 1))) {
           unite_wedge(s, s, s + 1);
           unite_wedge(s + 1, s + 1, s);
@@ -172,10 +176,13 @@ SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const Opera
       for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
       if (order.size() > 2) {
         third.resize(order.size());
+        plane.resize(order.size());
         for (std::size_t i = 0; i < order.size(); ++i) {
           const Tri& t = mesh.triangles[face(s + i)];
-          const int k = half[s + i].value % 3;
+          const int k = half[s + i].edge_slot % 3;
           third[i] = &mesh.vertices[t[(k + 2) % 3]];
+          const int emitter = emitted_by[face(s + i)];
+          plane[i] = {corner(emitter, 0), corner(emitter, 1), corner(emitter, 2)};
         }
         // Pieces of the reference's own input triangle lie in its plane, across the edge.
         opposite.assign(order.size(), 0);
@@ -187,8 +194,7 @@ SideCells side_cells(const BasicOutputMesh<typename M::Point>& mesh, const Opera
         // cheaper than orient3d on the implicit a, b and x's corner (degree 6 against up
         // to 15; this was most of the stage on meshes with many crossings).
         auto side = [&](int x, int y) {
-          const int t = emitted_by[face(s + x)];
-          const tritri::Sign sign = orient3d_points(corner(t, 0), corner(t, 1), corner(t, 2), *third[y]);
+          const tritri::Sign sign = orient3d_points(plane[x][0], plane[x][1], plane[x][2], *third[y]);
           return forward(s + x) ? sign : -sign;
         };
         order_around_axis(order, 0, side, &opposite);

@@ -8,8 +8,8 @@
 // (back). Around each edge of the arrangement the triangles using it are ordered exactly
 // by angle (orient3d of a triangle's third corner against the plane of the soup triangle
 // that emitted the other, whose orientation it keeps; an edge of two triangles needs no
-// predicate), and the two sides that face each
-// other across each wedge between neighbours lie in one cell. Returns the sides grouped
+// predicate), and the two sides that face each other across each wedge between
+// neighbours lie in one cell. Returns the sides grouped
 // into cells: cell[s] in 0..cells-1, numbered in order of their first side (so the result
 // does not depend on the number of threads). Cells reached only through a vertex (two
 // solids touching at a corner) or not at all (nested shells) stay apart: stage 6's second
@@ -23,9 +23,9 @@
 // summed with the edge's direction in each triangle cancel; otherwise throws
 // OpenOperandError naming the smallest such operand, its number of unbalanced edges and
 // the first of them (its endpoints, rounded to doubles).
-// Cost: O(T) for T triangles to group the edges (a counting sort by vertex, then each
-// vertex's few edges sorted), plus O(k log k) exact orient3d for every edge of k > 2
-// triangles (in parallel), plus a union-find.
+// Cost: O(T + sum of d log d over the vertices' d edges) for T triangles to group the
+// edges (a counting sort by vertex, then each vertex's edges sorted), plus O(k log k)
+// exact orient3d for every edge of k > 2 triangles (in parallel), plus a union-find.
 #pragma once
 
 #include <vector>

@@ -69,13 +69,12 @@ RayStart ray_start(const BasicOutputMesh<typename M::Point>& mesh, int v, const 
   beyond[0] += 1;
   std::vector<int> order(fan.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  order_around_axis(order, -1, [&](int i, int j) {
-    return orient3d_points(V, exact_of(best), i < 0 ? beyond : *third[i], *third[j]);
-  });
+  const ExactVec3& U = exact_of(best);
+  order_around_axis(order, -1,
+                    [&](int i, int j) { return orient3d_points(V, U, i < 0 ? beyond : *third[i], *third[j]); });
   // The first triangle after +x faces it with its side towards decreasing angle.
   const int first = order.front();
   ExactVec3 mid = V;
-  const ExactVec3& U = exact_of(best);
   for (int k = 0; k < 3; ++k) mid[k] = (V[k] + U[k]) / 2;
   return {2 * fan[first] + (forward[first] ? 1 : 0), mid};
 }

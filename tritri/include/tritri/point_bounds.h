@@ -34,6 +34,7 @@
 #include <utility>
 #include <limits>
 
+#include "tritri/detail/incidence.h"
 #include "tritri/double_predicates.h"
 #include "tritri/implicit_point.h"
 #include "tritri/implicit_predicates.h"
@@ -159,7 +160,9 @@ inline XBounds direction_bounds(const ImplicitPoint& p) {
 
 // A total order on points, exact: by kSortDirection . p, ties by compare_xyz; 0 exactly
 // for coincident points. The bounds (direction_bounds) settle almost every comparison;
-// otherwise the exact homogeneous coordinates decide (CGAL::Mpzf).
+// then two points of one construction (an LPI of one line and plane, a TPI of one set of
+// planes: detail/incidence.h) are equal without arithmetic; otherwise the exact
+// homogeneous coordinates decide (CGAL::Mpzf).
 inline int compare_along_direction(const ImplicitPoint& p, const XBounds& bp, const ImplicitPoint& q,
                                    const XBounds& bq) {
   if (bp.hi < bq.lo) return -1;
