@@ -34,7 +34,7 @@ std::string point_text(const Vec3& p) {
 // (gathered in one pass over the triangles: the fans then read one contiguous array instead
 // of the triangles, their corners and jumps at random).
 struct HalfEdge {
-  std::uint64_t key;   // the undirected edge a * nV + b, a < b
+  std::uint64_t key;      // the undirected edge a * nV + b, a < b
   int edge_slot;          // 3 f + k: triangle f's edge from corner k to corner k + 1
   std::uint32_t packed;   // bit 0: runs a -> b; bits 1-8: its one jump signed by that
                           // direction, plus 128 (0: none, several, an operand >= 2^23 or a
@@ -62,7 +62,7 @@ std::optional<bool> packed_jumps_cancel(std::uint32_t x, std::uint32_t y) {
   return (x >> kOperandShift) == (y >> kOperandShift) && jx + jy == 256;
 }
 
-// Half-edges in (key, value) order, with the start of each run of one key (one edge's fan)
+// Half-edges in (key, edge_slot) order, with the start of each run of one key (one edge's fan)
 // and the end. A counting sort by the smaller endpoint, then each vertex's few half-edges
 // sorted: the order one global sort gives, in linear time (the global sort was a quarter
 // of this stage).
@@ -90,10 +90,12 @@ EdgeFans edge_fans(const std::vector<Tri>& triangles, std::uint64_t nV, const Op
       }
     }
   }
+  auto before = [](const HalfEdge& x, const HalfEdge& y) {
+    return x.key != y.key ? x.key < y.key : x.edge_slot < y.edge_slot;
+  };
   tbb::parallel_for(std::size_t{0}, static_cast<std::size_t>(nV), [&](std::size_t v) {
     std::sort(out.half.begin() + static_cast<std::ptrdiff_t>(bucket[v]),
-              out.half.begin() + static_cast<std::ptrdiff_t>(bucket[v + 1]),
-              [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.edge_slot < y.edge_slot; });
+              out.half.begin() + static_cast<std::ptrdiff_t>(bucket[v + 1]), before);
   });
   for (std::size_t i = 0; i < out.half.size(); ++i)
     if (i == 0 || out.half[i].key != out.half[i - 1].key) out.run_start.push_back(i);

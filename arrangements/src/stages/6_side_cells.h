@@ -9,11 +9,11 @@
 // by angle (orient3d of a triangle's third corner against the plane of the soup triangle
 // that emitted the other, whose orientation it keeps; an edge of two triangles needs no
 // predicate), and the two sides that face each other across each wedge between
-// neighbours lie in one cell. Returns the sides grouped
-// into cells: cell[s] in 0..cells-1, numbered in order of their first side (so the result
-// does not depend on the number of threads). Cells reached only through a vertex (two
-// solids touching at a corner) or not at all (nested shells) stay apart: stage 6's second
-// half (6_winding.h) places them.
+// neighbours lie in one cell. Returns the sides grouped into cells: cell[s] in
+// 0..cells-1, numbered in order of their first side (so the result does not depend on
+// the number of threads). Cells reached only through a vertex (two solids touching at a
+// corner) or not at all (nested shells) stay apart: stage 6's second half (6_winding.h)
+// places them.
 //   deltas   per output triangle, the jump of each operand's winding number across it
 //            (booleans/operand_weights.h)
 //   soup, emitted_by, scale_exponent   stage 1's soup (in the frame scaled by

@@ -3,9 +3,9 @@
 // ids_in_model_order<M>(n, point_at, key): the ids 0 .. n-1 sorted by the model's exact
 // total order on points (M::compare, with M::key computed once per point into `key`,
 // resized to n), ties (coincident points) by id, so the result does not depend on
-// scheduling. point_at(i) returns point i (a const M::Point&). The order the pipeline
-// deduplicates points in (stage 4's new points, stage 5's TPIs) and looks them up among
-// the input vertices by (binary search or merge on both sorted lists).
+// scheduling. point_at(i) returns point i (a const M::Point&). Stages 4 and 5 sort their
+// new points (LPIs, TPIs) and the input vertices this way, then find coincident points
+// as neighbours in one list and matches between two lists by merge or binary search.
 // Exactness: M::compare is exact (DoubleModel: certified bounds along a direction, points
 // equal by construction, then exact arithmetic). Cost: n keys and O(n log n) comparisons,
 // in parallel (oneTBB, the caller's arena).
