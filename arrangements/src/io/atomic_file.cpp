@@ -81,8 +81,13 @@ void AtomicFile::commit() {
 }
 
 void AtomicFile::flush() {
-  const char* p = buffer_.data();
-  std::size_t left = buffer_.size();
+  write_all(buffer_);
+  buffer_.clear();
+}
+
+void AtomicFile::write_all(std::string_view bytes) {
+  const char* p = bytes.data();
+  std::size_t left = bytes.size();
   while (left > 0) {
     const ssize_t n = ::write(fd_, p, left);
     if (n < 0 && errno == EINTR) continue;
@@ -90,7 +95,6 @@ void AtomicFile::flush() {
     p += n;
     left -= static_cast<std::size_t>(n);
   }
-  buffer_.clear();
 }
 
 void AtomicFile::fail(const char* what) const {

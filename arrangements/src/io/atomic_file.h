@@ -7,7 +7,8 @@
 //                         folder of path (O_EXCL: never a file that another thread or
 //                         process is writing): a short name of its own, so that any path
 //                         the system takes (a name of up to NAME_MAX bytes) can be written
-//   f.append(bytes)       buffered (1 MiB) writes
+//   f.append(bytes)       buffered (1 MiB) writes; pieces of 64 KiB or more are written
+//                         directly, after what is buffered
 //   f.finish()            writes what is buffered; gives the file the permission bits of
 //                         the file at path when there is one (else it has 0666 minus the
 //                         umask, as any new file); closes it
@@ -45,6 +46,11 @@ class AtomicFile {
   ~AtomicFile();
 
   void append(std::string_view bytes) {
+    if (bytes.size() >= kDirectSize) {  // a chunk formatted apart: written as it is, not copied
+      flush();
+      write_all(bytes);
+      return;
+    }
     buffer_.append(bytes);
     if (buffer_.size() >= kBufferSize) flush();
   }
@@ -58,8 +64,10 @@ class AtomicFile {
 
  private:
   static constexpr std::size_t kBufferSize = std::size_t{1} << 20;
+  static constexpr std::size_t kDirectSize = std::size_t{1} << 16;
 
   void flush();
+  void write_all(std::string_view bytes);
   [[noreturn]] void fail(const char* what) const;
 
   std::string final_, tmp_;
