@@ -25,6 +25,7 @@
 #include "io/mesh_format.h"
 #include "io/standard_output.h"
 #include "support/command_line.h"
+#include "support/kept_until_exit.h"
 #include "support/process_usage.h"
 #include "support/worker_threads.h"
 #include "arrangements/load_triangle_soup.h"
@@ -258,7 +259,9 @@ int run(int argc, char** argv) {
     return std::visit(
         [&](const auto& soup) {
           // The loader checked every fact about the input as it read it (validate once).
-          auto result = tree ? detail::boolean_validated(soup, *tree, options) : detail::arrange_validated(soup, options);
+          // Never destroyed: the process ends with it (support/kept_until_exit.h).
+          auto& result = detail::kept_until_exit(tree ? detail::boolean_validated(soup, *tree, options)
+                                                      : detail::arrange_validated(soup, options));
           ArrangeStats& s = result.stats;
           add_load_time(s, t_load);
           std::optional<RoundedMesh> rounded;
