@@ -59,7 +59,9 @@
 // (missing or unwritable folder, disk full, ...).
 //
 // Cost: linear in the output size. to_double / to_exact evaluate each implicit vertex
-// exactly once (rational arithmetic: by far the dominant cost for LPIs and TPIs).
+// exactly once (rational arithmetic: by far the dominant cost for LPIs and TPIs). In
+// parallel (oneTBB, as many workers as the caller allows): the rounding, and the text's
+// lines in chunks, appended in order; the bytes do not depend on the thread count.
 #pragma once
 
 #include <string>
