@@ -42,6 +42,13 @@ WithAllSteps round_with_all_steps(const TriangleSoup& soup) {
   return all;
 }
 
+// The list after "Tried: " in a refusal, up to the move limit ("" when there is none).
+std::string tried_steps(const std::string& refusal) {
+  const std::size_t begin = refusal.find("Tried: "), end = refusal.find("; move limit");
+  if (begin == std::string::npos || end == std::string::npos || end < begin) return "";
+  return refusal.substr(begin + 7, end - begin - 7);
+}
+
 TEST(RoundSafeWithout, EveryStepHasOneDistinctName) {
   for (std::size_t i = 0; i < kRoundSteps; ++i) {
     EXPECT_FALSE(kRoundStepNames[i].empty());
@@ -62,6 +69,11 @@ TEST(RoundSafeWithout, LeavingOutNudgingRefusesWhatOnlyNudgingSettles) {
   const std::string refusal =
       rounding_refusal(all.first.mesh, soup, round_step_bit(RoundStep::nudging), without, without_report);
   EXPECT_NE(refusal.find("; left out: nudging"), std::string::npos) << refusal;
+  // What it tried names rerouting and the grid, not the step left out.
+  const std::string tried = tried_steps(refusal);
+  EXPECT_NE(tried.find("rerouting"), std::string::npos) << refusal;
+  EXPECT_NE(tried.find("the grid of 2^8 ulps"), std::string::npos) << refusal;
+  EXPECT_EQ(tried.find("nudging"), std::string::npos) << refusal;
   EXPECT_EQ(without_report.nudged, 0u);
   EXPECT_GT(without_report.conflicts_left, 0u);
   std::printf("10 x 21 copies without nudging: %d passes, then refused with %zu conflicts left\n",
@@ -92,8 +104,14 @@ TEST(RoundSafeWithout, StepsNotReachedChangeNothing) {
       rounding_refusal(all.first.mesh, soup, round_step_bit(RoundStep::rerouting), without, without_report);
   EXPECT_EQ(without_report.rerouted, 0u);
   EXPECT_EQ(without_report.nudged, 0u);
-  if (!refusal.empty()) EXPECT_NE(refusal.find("; left out: rerouting"), std::string::npos) << refusal;
-  else EXPECT_NE(without.vertices, all.mesh.vertices);
+  if (!refusal.empty()) {
+    EXPECT_NE(refusal.find("; left out: rerouting"), std::string::npos) << refusal;
+    // Neither rerouting nor nudging (which starts from rerouting's best) was tried.
+    EXPECT_EQ(tried_steps(refusal).find("rerouting"), std::string::npos) << refusal;
+    EXPECT_EQ(tried_steps(refusal).find("nudging"), std::string::npos) << refusal;
+  } else {
+    EXPECT_NE(without.vertices, all.mesh.vertices);
+  }
   std::printf("10 x 19 turned by pi without rerouting: %s after %d passes\n", refusal.empty() ? "settled" : "refused",
               without_report.passes);
 }

@@ -42,6 +42,22 @@ inline std::string left_out(unsigned without) {
   return names;
 }
 
+// "rerouting (...), ..., nudging": the steps after the passes at the nearest doubles that
+// ran, in the ladder's order (round_ladder.h): none that `without` leaves out, the input
+// steps only with the input, nudging only after rerouting (it starts from rerouting's best).
+inline std::string steps_tried(bool input_steps, unsigned without) {
+  const auto used = [without](RoundStep step) { return (without & round_step_bit(step)) == 0; };
+  std::string names;
+  const auto add = [&names](const char* name) { names += (names.empty() ? "" : ", ") + std::string(name); };
+  if (used(RoundStep::rerouting)) add("rerouting (it stops after 3 rounds without fewer violations)");
+  if (input_steps && used(RoundStep::merged_input)) add("merging input vertices (within 4 to 256 ulps)");
+  if (input_steps && used(RoundStep::snapped_layers)) add("snapping nearly coplanar faces");
+  if (input_steps && used(RoundStep::snapped_contacts)) add("snapping corners onto faces they touch");
+  if (used(RoundStep::level_1)) add("the grid of 2^8 ulps");
+  if (used(RoundStep::rerouting) && used(RoundStep::nudging)) add("nudging");
+  return names.empty() ? "nothing after the passes at the nearest doubles" : names;
+}
+
 }  // namespace detail
 
 inline std::string refusal_message(const RefusalFacts& f) {
@@ -58,11 +74,7 @@ inline std::string refusal_message(const RefusalFacts& f) {
          std::to_string(f.last.intersecting_pairs) + " intersecting pairs, merged " +
          std::to_string(f.last.merged_vertices) + " vertices and removed " +
          std::to_string(f.last.removed_degenerate + f.last.removed_duplicate) +
-         " degenerate or duplicate triangles. Tried: rerouting (it stops after 3 rounds without fewer "
-         "violations), nudging, the grid of 2^8 ulps" +
-         (f.input_steps ? std::string(", merging input vertices (within 4 to 256 ulps), snapping nearly coplanar "
-                                      "faces")
-                        : std::string()) +
+         " degenerate or duplicate triangles. Tried: " + detail::steps_tried(f.input_steps, f.without) +
          "; move limit " + short_number(f.move_limit_ulps) + " ulps (max_move_relative " +
          short_number(f.max_move_relative) + " of the diagonal of " + short_number(f.diagonal_ulps) +
          " ulps, or 16 ulps); " + std::to_string(f.passes) + " passes and rounds in all (at most " +
