@@ -173,6 +173,8 @@ inline constexpr std::array<std::string_view, kRoundSteps> kRoundStepNames = {
     "merged-nearest", "rerouting", "merged-input", "snapped-layers", "snapped-contacts", "level-1", "nudging"};
 // The bit of RoundSafeOptions::without that leaves `step` out.
 constexpr unsigned round_step_bit(RoundStep step) { return 1u << static_cast<unsigned>(step); }
+// Whether RoundSafeOptions::without = `without` leaves `step` out.
+constexpr bool leaves_out(unsigned without, RoundStep step) { return (without & round_step_bit(step)) != 0; }
 
 struct RoundSafeOptions {
   int max_passes = 384;  // passes of rounding and arranging, then rounds of the last resorts

@@ -175,6 +175,19 @@ void append_coordinates(Text& f, const Mesh& mesh, const std::vector<Vec3>& roun
   }
 }
 
+// One line per triangle: `lead`, then its three vertex indices plus `base` (OBJ counts
+// from 1, OFF from 0).
+void append_triangle_lines(AtomicFile& f, const std::vector<Tri>& triangles, char lead, long long base) {
+  append_lines(f, triangles.size(), [&](std::size_t t, Text& text) {
+    text.append(lead);
+    for (int i : triangles[t]) {
+      text.append(' ');
+      append_integer(text, i + base);
+    }
+    text.append('\n');
+  });
+}
+
 template <class Mesh>
 void write_obj(AtomicFile& f, const Mesh& mesh, const std::vector<Vec3>& rounded, bool exact) {
   append_lines(f, mesh.vertices.size(), [&](std::size_t i, Text& text) {
@@ -183,14 +196,7 @@ void write_obj(AtomicFile& f, const Mesh& mesh, const std::vector<Vec3>& rounded
     append_coordinates(text, mesh, rounded, exact, i, scratch);
     text.append('\n');
   });
-  append_lines(f, mesh.triangles.size(), [&](std::size_t t, Text& text) {
-    text.append('f');
-    for (int i : mesh.triangles[t]) {
-      text.append(' ');
-      append_integer(text, static_cast<long long>(i) + 1);
-    }
-    text.append('\n');
-  });
+  append_triangle_lines(f, mesh.triangles, 'f', 1);
 }
 
 // The one OFF writer (write_mesh and write_off): "OFF", "#V #F 0", one line per vertex
@@ -207,14 +213,7 @@ void write_off_text(AtomicFile& f, std::size_t vertex_count, const std::vector<T
     append_vertex(i, text);
     text.append('\n');
   });
-  append_lines(f, triangles.size(), [&](std::size_t t, Text& text) {
-    text.append('3');
-    for (int i : triangles[t]) {
-      text.append(' ');
-      append_integer(text, i);
-    }
-    text.append('\n');
-  });
+  append_triangle_lines(f, triangles, '3', 0);
 }
 
 template <class Mesh>

@@ -140,7 +140,7 @@ class Ladder {
   using Found = std::optional<RoundedMesh>;
 
   // Whether options.without leaves `step` in (a study of the ladder leaves some out).
-  bool uses(RoundStep step) const { return (options_.without & round_step_bit(step)) == 0; }
+  bool uses(RoundStep step) const { return !leaves_out(options_.without, step); }
 
   // The result, with the report filled, when within the move limit, not emptied and, where
   // options.keep_closed asks, closed.

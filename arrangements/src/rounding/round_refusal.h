@@ -38,7 +38,7 @@ inline std::string short_number(double x) {
 inline std::string left_out(unsigned without) {
   std::string names;
   for (std::size_t k = 0; k < kRoundSteps; ++k)
-    if (without & round_step_bit(static_cast<RoundStep>(k))) names += (names.empty() ? "; left out: " : ", ") + std::string(kRoundStepNames[k]);
+    if (leaves_out(without, static_cast<RoundStep>(k))) names += (names.empty() ? "; left out: " : ", ") + std::string(kRoundStepNames[k]);
   return names;
 }
 
@@ -46,7 +46,7 @@ inline std::string left_out(unsigned without) {
 // ran, in the ladder's order (round_ladder.h): none that `without` leaves out, the input
 // steps only with the input, nudging only after rerouting (it starts from rerouting's best).
 inline std::string steps_tried(bool input_steps, unsigned without) {
-  const auto used = [without](RoundStep step) { return (without & round_step_bit(step)) == 0; };
+  const auto used = [without](RoundStep step) { return !leaves_out(without, step); };
   std::string names;
   const auto add = [&names](const char* name) { names += (names.empty() ? "" : ", ") + std::string(name); };
   if (used(RoundStep::rerouting)) add("rerouting (it stops after 3 rounds without fewer violations)");
