@@ -3,8 +3,8 @@
 // mesh_counts(F): simplex counts of a triangle mesh, as the arrangement statistics report
 // them: vertices referenced by a triangle, unique undirected edges, triangles, and the
 // Euler characteristic V - E + F of that complex. Cost: O(#F + #V) plus sorting each
-// vertex's neighbours (a handful each); every pass in parallel (oneTBB, the caller's
-// arena), the same counts for any thread count.
+// vertex's neighbours (a handful each); the passes over triangles and buckets in parallel
+// (oneTBB, the caller's arena), the same counts for any thread count.
 #pragma once
 
 #include <tbb/blocked_range.h>
@@ -32,10 +32,10 @@ struct MeshCounts {
 };
 
 // Edges are bucketed by their smaller end (a counting sort), then each bucket, a vertex's
-// few neighbours, is sorted and counted: linear, no global sort. Every pass is parallel:
-// the counting sort over blocks of triangles, each block with its own counts (shared
-// atomic counters measured no faster than one thread), at most kMaxBlocks of them (extra
-// memory: that many counts per vertex).
+// few neighbours, is sorted and counted: linear, no global sort. The counting sort runs
+// over blocks of triangles, each block with its own counts (shared atomic counters
+// measured no faster than one thread), at most kMaxBlocks of them (extra memory: that
+// many counts per vertex); only the offsets' prefix pass over the vertices is serial.
 inline MeshCounts mesh_counts(const std::vector<Tri>& F) {
   constexpr std::size_t kMaxBlocks = 8, kMinBlockTriangles = std::size_t{1} << 15;
   MeshCounts c;
